@@ -1,0 +1,1 @@
+"""Python tooling for ldnaFoam."""

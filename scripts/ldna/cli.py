@@ -1,0 +1,3 @@
+"""Command-line entry point ``ldna``."""
+def main() -> int:
+    return 0

@@ -1,0 +1,642 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "metalGasMixture.H"
+#include "fvc.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(metalGasMixture, 0);
+}
+
+const Foam::scalar Foam::metalGasMixture::propertyCheckTmin = 200;
+const Foam::scalar Foam::metalGasMixture::propertyCheckTmax = 3200;
+const Foam::scalar Foam::metalGasMixture::Tref = 298.15;
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::Function1<Foam::scalar>>
+Foam::metalGasMixture::readPositiveFunction
+(
+    const dictionary& dict,
+    const word& entryName,
+    const scalar T0,
+    const scalar T1
+) const
+{
+    autoPtr<Function1<scalar>> f(Function1<scalar>::New(entryName, dict));
+
+    // Sample the range finely enough to catch a sign change of a
+    // low-order polynomial or a table entry
+    const label nSamples = 200;
+    for (label i = 0; i <= nSamples; ++i)
+    {
+        const scalar T = T0 + (T1 - T0)*i/nSamples;
+        const scalar value = f->value(T);
+        if (!(value > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << entryName << "' in " << dict.name()
+                << " must be positive for T in [" << T0 << ", " << T1
+                << "] K, but is " << value << " at T = " << T << " K"
+                << exit(FatalIOError);
+        }
+    }
+
+    return f;
+}
+
+
+void Foam::metalGasMixture::readCoeffs()
+{
+    pMin_ = dimensionedScalar("pMin", dimPressure, *this);
+    if (pMin_.value() <= 0)
+    {
+        FatalIOErrorInFunction(*this)
+            << "Entry 'pMin' must be > 0 Pa, not " << pMin_.value()
+            << exit(FatalIOError);
+    }
+
+    const dictionary& metal = subDict(phase1Name());
+
+    Tsolidus_ = metal.get<scalar>("solidus");
+    Tliquidus_ = metal.get<scalar>("liquidus");
+    latentHeat_ = metal.get<scalar>("latentHeat");
+
+    if (Tsolidus_ <= 0)
+    {
+        FatalIOErrorInFunction(metal)
+            << "Entry 'solidus' must be > 0 K, not " << Tsolidus_
+            << exit(FatalIOError);
+    }
+    if (Tliquidus_ <= Tsolidus_)
+    {
+        FatalIOErrorInFunction(metal)
+            << "Entry 'liquidus' (" << Tliquidus_ << " K) must be above"
+            << " 'solidus' (" << Tsolidus_ << " K): the latent heat is"
+            << " released over the mushy range (solidus, liquidus)"
+            << exit(FatalIOError);
+    }
+    if (latentHeat_ < 0)
+    {
+        FatalIOErrorInFunction(metal)
+            << "Entry 'latentHeat' must be >= 0 J/kg, not " << latentHeat_
+            << exit(FatalIOError);
+    }
+
+    const scalar Ts = Tsolidus_;
+    const scalar Tl = Tliquidus_;
+    const scalar Tmin = propertyCheckTmin;
+    const scalar Tmax = propertyCheckTmax;
+
+    const dictionary& rhoDict = metal.subDict("rho");
+    rhoSolid_ = readPositiveFunction(rhoDict, "solid", Tmin, Ts);
+    rhoLiquid_ = readPositiveFunction(rhoDict, "liquid", Tl, Tmax);
+
+    const dictionary& CpDict = metal.subDict("Cp");
+    CpSolid_ = readPositiveFunction(CpDict, "solid", Tmin, Ts);
+    CpLiquid_ = readPositiveFunction(CpDict, "liquid", Tl, Tmax);
+
+    const dictionary& kappaDict = metal.subDict("kappa");
+    kappaSolid_ = readPositiveFunction(kappaDict, "solid", Tmin, Ts);
+    kappaLiquid_ = readPositiveFunction(kappaDict, "liquid", Tl, Tmax);
+
+    muLiquid_ = readPositiveFunction(metal, "mu", Tl, Tmax);
+
+    const dictionary& gas = subDict(phase2Name());
+
+    Rgas_ = gas.get<scalar>("R");
+    if (Rgas_ <= 0)
+    {
+        FatalIOErrorInFunction(gas)
+            << "Entry 'R' (specific gas constant) must be > 0 J/kg/K, not "
+            << Rgas_ << exit(FatalIOError);
+    }
+    CpGas_ = readPositiveFunction(gas, "Cp", Tmin, Tmax);
+    kappaGas_ = readPositiveFunction(gas, "kappa", Tmin, Tmax);
+    muGas_ = readPositiveFunction(gas, "mu", Tmin, Tmax);
+}
+
+
+template<class CellFunction>
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::evaluate
+(
+    const word& name,
+    const dimensionSet& dims,
+    const CellFunction& f
+) const
+{
+    tmp<volScalarField> tresult
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                name,
+                T_.time().timeName(),
+                T_.mesh(),
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            T_.mesh(),
+            dimensionedScalar(dims, Zero)
+        )
+    );
+    volScalarField& result = tresult.ref();
+
+    const scalarField& Tc = T_.primitiveField();
+    const scalarField& glc = liquidFraction_.primitiveField();
+    scalarField& rc = result.primitiveFieldRef();
+    forAll(rc, celli)
+    {
+        rc[celli] = f(Tc[celli], glc[celli]);
+    }
+
+    volScalarField::Boundary& rb = result.boundaryFieldRef();
+    forAll(rb, patchi)
+    {
+        const scalarField& Tp = T_.boundaryField()[patchi];
+        const scalarField& glp = liquidFraction_.boundaryField()[patchi];
+        fvPatchScalarField& rp = rb[patchi];
+        forAll(rp, facei)
+        {
+            rp[facei] = f(Tp[facei], glp[facei]);
+        }
+    }
+
+    return tresult;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::metalGasMixture::metalGasMixture
+(
+    const volVectorField& U,
+    const surfaceScalarField& phi
+)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "thermophysicalProperties",
+            U.time().constant(),
+            U.db(),
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        )
+    ),
+    twoPhaseMixture(U.mesh(), *this),
+    interfaceProperties(alpha1(), U, *this),
+    p_
+    (
+        IOobject
+        (
+            "p",
+            U.time().timeName(),
+            U.mesh(),
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        U.mesh()
+    ),
+    T_
+    (
+        IOobject
+        (
+            "T",
+            U.time().timeName(),
+            U.mesh(),
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        U.mesh()
+    ),
+    liquidFraction_
+    (
+        IOobject
+        (
+            "liquidFraction",
+            U.time().timeName(),
+            U.mesh(),
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        U.mesh(),
+        dimensionedScalar(dimless, Zero)
+    ),
+    rho1_
+    (
+        IOobject
+        (
+            IOobject::groupName("rho", phase1Name()),
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimDensity, Zero)
+    ),
+    rho2_
+    (
+        IOobject
+        (
+            IOobject::groupName("rho", phase2Name()),
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimDensity, Zero)
+    ),
+    psi2_
+    (
+        IOobject
+        (
+            IOobject::groupName("psi", phase2Name()),
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimDensity/dimPressure, Zero)
+    ),
+    kappa_
+    (
+        IOobject
+        (
+            "kappa",
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimPower/dimLength/dimTemperature, Zero)
+    ),
+    mu_
+    (
+        IOobject
+        (
+            "mu",
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimDynamicViscosity, Zero)
+    ),
+    pMin_("pMin", dimPressure, Zero),
+    Tsolidus_(0),
+    Tliquidus_(0),
+    latentHeat_(0),
+    Rgas_(0)
+{
+    readCoeffs();
+
+    if (min(T_).value() <= 0)
+    {
+        FatalErrorInFunction
+            << "Field T must be > 0 K everywhere; its minimum is "
+            << min(T_).value() << exit(FatalError);
+    }
+
+    // Without a stored liquid fraction start from equilibrium
+    if
+    (
+        !liquidFraction_.typeHeaderOk<volScalarField>(true)
+    )
+    {
+        forAll(liquidFraction_, celli)
+        {
+            liquidFraction_[celli] = equilibriumLiquidFraction(T_[celli]);
+        }
+    }
+
+    correctThermo();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::metalGasMixture::equilibriumLiquidFraction
+(
+    const scalar T
+) const
+{
+    return min(max((T - Tsolidus_)/(Tliquidus_ - Tsolidus_), 0), 1);
+}
+
+
+Foam::scalar Foam::metalGasMixture::metalCp(const scalar T) const
+{
+    if (T <= Tsolidus_)
+    {
+        return CpSolid_->value(T);
+    }
+    if (T >= Tliquidus_)
+    {
+        return CpLiquid_->value(T);
+    }
+    const scalar CpS = CpSolid_->value(Tsolidus_);
+    const scalar CpL = CpLiquid_->value(Tliquidus_);
+    return CpS + (CpL - CpS)*(T - Tsolidus_)/(Tliquidus_ - Tsolidus_);
+}
+
+
+Foam::scalar Foam::metalGasMixture::metalSensibleEnthalpy
+(
+    const scalar T
+) const
+{
+    const scalar Ts = Tsolidus_;
+    const scalar Tl = Tliquidus_;
+
+    if (T <= Ts)
+    {
+        return CpSolid_->integrate(Tref, T);
+    }
+
+    // Mushy zone: Cp linear in T between the solid and liquid values
+    const scalar CpS = CpSolid_->value(Ts);
+    const scalar CpL = CpLiquid_->value(Tl);
+    const scalar hs = CpSolid_->integrate(Tref, Ts);
+    const scalar dT = min(T, Tl) - Ts;
+    const scalar hMushy =
+        hs + CpS*dT + 0.5*(CpL - CpS)*sqr(dT)/(Tl - Ts);
+
+    if (T < Tl)
+    {
+        return hMushy;
+    }
+    return hMushy + CpLiquid_->integrate(Tl, T);
+}
+
+
+Foam::scalar Foam::metalGasMixture::metalDensity
+(
+    const scalar T,
+    const scalar gl
+) const
+{
+    // Each phase's function is used on its own range only
+    return
+        (1 - gl)*rhoSolid_->value(min(T, Tsolidus_))
+      + gl*rhoLiquid_->value(max(T, Tliquidus_));
+}
+
+
+Foam::scalar Foam::metalGasMixture::gasSensibleEnthalpy(const scalar T) const
+{
+    return CpGas_->integrate(Tref, T);
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h1() const
+{
+    const scalar L = latentHeat_;
+    return evaluate
+    (
+        "h1",
+        dimEnergy/dimMass,
+        [&](scalar T, scalar gl) { return metalSensibleEnthalpy(T) + gl*L; }
+    );
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h2() const
+{
+    return evaluate
+    (
+        "h2",
+        dimEnergy/dimMass,
+        [&](scalar T, scalar) { return gasSensibleEnthalpy(T); }
+    );
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp1() const
+{
+    return evaluate
+    (
+        "Cp1",
+        dimEnergy/dimMass/dimTemperature,
+        [&](scalar T, scalar) { return metalCp(T); }
+    );
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp2() const
+{
+    return evaluate
+    (
+        "Cp2",
+        dimEnergy/dimMass/dimTemperature,
+        [&](scalar T, scalar) { return CpGas_->value(T); }
+    );
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho() const
+{
+    return alpha1()*rho1_ + alpha2()*rho2_;
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::metalGasMixture::volumetricEnthalpy() const
+{
+    return alpha1()*rho1_*h1() + alpha2()*rho2_*h2();
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity() const
+{
+    const scalar latentSlope = latentHeat_/(Tliquidus_ - Tsolidus_);
+
+    tmp<volScalarField> tC(alpha1()*rho1_*Cp1() + alpha2()*rho2_*Cp2());
+    volScalarField& C = tC.ref();
+
+    forAll(C, celli)
+    {
+        const scalar gl = liquidFraction_[celli];
+        if (gl > 0 && gl < 1)
+        {
+            C[celli] += alpha1()[celli]*rho1_[celli]*latentSlope;
+        }
+    }
+
+    return tC;
+}
+
+
+void Foam::metalGasMixture::correct()
+{
+    interfaceProperties::correct();
+}
+
+
+Foam::scalar Foam::metalGasMixture::correctLiquidFraction()
+{
+    const scalar Ts = Tsolidus_;
+    const scalar Tl = Tliquidus_;
+    const scalar dTm = Tl - Ts;
+    const scalar L = latentHeat_;
+
+    const volScalarField C(alpha1()*rho1_*Cp1() + alpha2()*rho2_*Cp2());
+
+    scalar maxChange = 0;
+
+    forAll(T_, celli)
+    {
+        const scalar m = alpha1()[celli]*rho1_[celli];
+        const scalar gl0 = liquidFraction_[celli];
+        const scalar Tc = T_[celli];
+
+        // Local enthalpy, linearised in T, kept by the projection:
+        // C T + m L gl = C T' + m L F(T')
+        const scalar H = C[celli]*Tc + m*L*gl0;
+
+        scalar gl;
+        scalar Tnew;
+        if (H <= C[celli]*Ts)
+        {
+            gl = 0;
+            Tnew = H/C[celli];
+        }
+        else if (H >= C[celli]*Tl + m*L)
+        {
+            gl = 1;
+            Tnew = (H - m*L)/C[celli];
+        }
+        else
+        {
+            Tnew = (H + m*L*Ts/dTm)/(C[celli] + m*L/dTm);
+            gl = (Tnew - Ts)/dTm;
+        }
+
+        maxChange = max(maxChange, mag(gl - gl0));
+        liquidFraction_[celli] = gl;
+        T_[celli] = Tnew;
+    }
+
+    T_.correctBoundaryConditions();
+
+    // Boundary values at equilibrium with the boundary temperature: they
+    // set the enthalpy of metal entering through a boundary
+    volScalarField::Boundary& glb = liquidFraction_.boundaryFieldRef();
+    forAll(glb, patchi)
+    {
+        const scalarField& Tp = T_.boundaryField()[patchi];
+        if (glb[patchi].coupled())
+        {
+            continue;
+        }
+        forAll(Tp, facei)
+        {
+            glb[patchi][facei] = equilibriumLiquidFraction(Tp[facei]);
+        }
+    }
+    liquidFraction_.correctBoundaryConditions();
+
+    return returnReduce(maxChange, maxOp<scalar>());
+}
+
+
+void Foam::metalGasMixture::correctThermo()
+{
+    rho1_ = evaluate
+    (
+        "rho1",
+        dimDensity,
+        [&](scalar T, scalar gl) { return metalDensity(T, gl); }
+    );
+
+    psi2_ = evaluate
+    (
+        "psi2",
+        dimDensity/dimPressure,
+        [&](scalar T, scalar) { return 1/(Rgas_*T); }
+    );
+    rho2_ = psi2_*p_;
+
+    const volScalarField kappa1
+    (
+        evaluate
+        (
+            "kappa1",
+            kappa_.dimensions(),
+            [&](scalar T, scalar gl)
+            {
+                return
+                    (1 - gl)*kappaSolid_->value(min(T, Tsolidus_))
+                  + gl*kappaLiquid_->value(max(T, Tliquidus_));
+            }
+        )
+    );
+    const volScalarField kappa2
+    (
+        evaluate
+        (
+            "kappa2",
+            kappa_.dimensions(),
+            [&](scalar T, scalar) { return kappaGas_->value(T); }
+        )
+    );
+    kappa_ = alpha1()*kappa1 + alpha2()*kappa2;
+
+    const volScalarField mu1
+    (
+        evaluate
+        (
+            "mu1",
+            mu_.dimensions(),
+            [&](scalar T, scalar)
+            {
+                return muLiquid_->value(max(T, Tliquidus_));
+            }
+        )
+    );
+    const volScalarField mu2
+    (
+        evaluate
+        (
+            "mu2",
+            mu_.dimensions(),
+            [&](scalar T, scalar) { return muGas_->value(T); }
+        )
+    );
+    mu_ = alpha1()*mu1 + alpha2()*mu2;
+}
+
+
+void Foam::metalGasMixture::correctGasDensity(const volScalarField& dRho2)
+{
+    rho2_ += dRho2;
+}
+
+
+Foam::scalar Foam::metalGasMixture::metalMass() const
+{
+    return fvc::domainIntegrate(alpha1()*rho1_).value();
+}
+
+
+Foam::scalar Foam::metalGasMixture::totalEnthalpy() const
+{
+    return fvc::domainIntegrate(volumetricEnthalpy()).value();
+}
+
+
+bool Foam::metalGasMixture::read()
+{
+    if (regIOobject::read())
+    {
+        readCoeffs();
+        return interfaceProperties::read();
+    }
+    return false;
+}
+
+
+// ************************************************************************* //

@@ -1,3 +1,38 @@
-"""Command-line entry point ``ldna``."""
-def main() -> int:
+"""Command-line entry point ``ldna`` of the ldnaFoam Python tooling."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from . import meshing
+
+
+def _mesh_levels(args: argparse.Namespace) -> int:
+    for path in meshing.write_mesh_levels(Path(args.case)):
+        print(path)
     return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``ldna`` argument parser with one sub-command per task."""
+    parser = argparse.ArgumentParser(prog="ldna", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    mesh_levels = commands.add_parser(
+        "mesh-levels",
+        help="write system/meshLevels/level0..3 of an LDNA case from its caseParameters",
+    )
+    mesh_levels.add_argument("case", nargs="?", default=".", help="case directory")
+    mesh_levels.set_defaults(func=_mesh_levels)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the ``ldna`` command line."""
+    args = build_parser().parse_args(argv)
+    return int(args.func(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,114 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+-------------------------------------------------------------------------------
+Application
+    ldnaFoam
+
+Group
+    grpMultiphaseSolvers
+
+Description
+    Solver for laser-assisted double-wire deposition welding with a
+    non-transferred arc (LDNA): two compressible, non-isothermal immiscible
+    fluids, metal (solid and liquid steel) and shielding gas, with a VOF
+    (volume of fluid) interface capturing approach, MULES with
+    sub-cycling, surface tension, gravity and an adaptive time step, in the
+    idiom of compressibleInterFoam.
+
+    The energy equation conserves the total enthalpy including the latent
+    heat of fusion (see metalGasMixture).  Every physical effect of the
+    process (enthalpy-porosity, droplets, laser, Marangoni, evaporation,
+    surface losses) enters through fvOptions listed by the case:
+      - alpha.<metal> with density rho.<metal>: metal mass source [kg/m3/s]
+        (continuity, phase fraction and pressure equations)
+      - U: momentum source [N/m3]
+      - T: heat source [W/m3]
+
+    The flow is laminar (Newtonian melt, paper assumption); pressure work
+    and viscous heating are neglected in the energy equation (low Mach).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "CMULES.H"
+#include "EulerDdtScheme.H"
+#include "localEulerDdtScheme.H"
+#include "CrankNicolsonDdtScheme.H"
+#include "subCycle.H"
+#include "metalGasMixture.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Laser-assisted double-wire deposition welding:"
+        " compressible VOF metal and shielding gas with melting and"
+        " solidification."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+
+    #include "readTimeControls.H"
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "alphaCourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        #include "storeEnergy.H"
+
+        // --- Pressure-velocity PIMPLE corrector loop
+        while (pimple.loop())
+        {
+            #include "metalMassSource.H"
+            #include "alphaControls.H"
+            #include "alphaEqnSubCycle.H"
+
+            #include "UEqn.H"
+            #include "TEqn.H"
+
+            // --- Pressure corrector loop
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+        }
+
+        #include "reportBalances.H"
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -122,6 +122,19 @@ void Foam::metalGasMixture::readCoeffs()
 }
 
 
+Foam::scalar Foam::metalGasMixture::latentSlope(const label celli) const
+{
+    const scalar gl = liquidFraction_[celli];
+    if (gl > 0 && gl < 1)
+    {
+        return
+            alpha1()[celli]*rho1_[celli]*latentHeat_
+           /(Tliquidus_ - Tsolidus_);
+    }
+    return 0;
+}
+
+
 template<class CellFunction>
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::evaluate
 (
@@ -452,18 +465,12 @@ Foam::metalGasMixture::volumetricEnthalpy() const
 
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity() const
 {
-    const scalar latentSlope = latentHeat_/(Tliquidus_ - Tsolidus_);
-
     tmp<volScalarField> tC(alpha1()*rho1_*Cp1() + alpha2()*rho2_*Cp2());
     volScalarField& C = tC.ref();
 
     forAll(C, celli)
     {
-        const scalar gl = liquidFraction_[celli];
-        if (gl > 0 && gl < 1)
-        {
-            C[celli] += alpha1()[celli]*rho1_[celli]*latentSlope;
-        }
+        C[celli] += latentSlope(celli);
     }
 
     return tC;
@@ -476,7 +483,10 @@ void Foam::metalGasMixture::correct()
 }
 
 
-Foam::scalar Foam::metalGasMixture::correctLiquidFraction()
+Foam::scalar Foam::metalGasMixture::correctLiquidFraction
+(
+    const volScalarField& Tstar
+)
 {
     const scalar Ts = Tsolidus_;
     const scalar Tl = Tliquidus_;
@@ -493,9 +503,10 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction()
         const scalar gl0 = liquidFraction_[celli];
         const scalar Tc = T_[celli];
 
-        // Local enthalpy, linearised in T, kept by the projection:
-        // C T + m L gl = C T' + m L F(T')
-        const scalar H = C[celli]*Tc + m*L*gl0;
+        // Local enthalpy as the energy equation linearised it about Tstar,
+        // kept by the projection: C T' + m L F(T') = H
+        const scalar H =
+            C[celli]*Tc + m*L*gl0 + latentSlope(celli)*(Tc - Tstar[celli]);
 
         scalar gl;
         scalar Tnew;

@@ -113,19 +113,54 @@ def read_internal_field(path: Path) -> np.ndarray:
 
 
 _BALANCE = re.compile(
-    r"^Time = (\S+).*?^Balance: metal mass = (\S+) kg, total enthalpy = (\S+) J",
-    re.M | re.S,
+    r"^Balance at t = (\S+): metal mass = (\S+) kg, total enthalpy = (\S+) J, "
+    r"min/max T = (\S+) / (\S+) K, liquid metal volume = (\S+) m3",
+    re.M,
 )
+
+#: Columns of :func:`read_balances`
+BALANCE_COLUMNS = ("time", "metal_mass", "enthalpy", "T_min", "T_max", "liquid_volume")
 
 
 def read_balances(log: Path) -> np.ndarray:
-    """Rows (time, metal mass [kg], total enthalpy [J]) from an ldnaFoam log."""
+    """Domain totals an ldnaFoam log reports once per time step.
+
+    A structured array with the fields of :data:`BALANCE_COLUMNS`: time [s],
+    metal mass [kg], total enthalpy [J], min and max temperature [K] and
+    liquid metal volume [m3].
+    """
+    rows = [tuple(float(v) for v in m.groups()) for m in _BALANCE.finditer(Path(log).read_text())]
+    return np.array(rows, dtype=[(name, float) for name in BALANCE_COLUMNS])
+
+
+_ALPHA_BOUNDS = re.compile(r"Min\(alpha\.\w+\) = (\S+)\s+Max\(alpha\.\w+\) = (\S+)")
+
+
+def alpha_bounds(log: Path) -> tuple[float, float]:
+    """Lowest and highest metal fraction reported anywhere in a solver log."""
+    pairs = np.array(_ALPHA_BOUNDS.findall(Path(log).read_text()), dtype=float)
+    return float(pairs[:, 0].min()), float(pairs[:, 1].max())
+
+
+def read_function_object(case: Path, name: str, file: str) -> np.ndarray:
+    """Numeric rows of a function object's output, all start times joined."""
     rows = []
-    time = None
-    for line in Path(log).read_text().splitlines():
-        if line.startswith("Time = "):
-            time = float(line.split()[2])
-        elif line.startswith("Balance: ") and time is not None:
-            fields = re.findall(r"= (\S+)", line)
-            rows.append((time, float(fields[0]), float(fields[1])))
+    for path in sorted((Path(case) / "postProcessing" / name).glob(f"*/{file}")):
+        for line in path.read_text().splitlines():
+            if line and not line.startswith("#"):
+                rows.append([float(v) for v in line.split()])
     return np.array(rows)
+
+
+def dictionary_value(case: Path, file: str, entry: str) -> str:
+    """Value of a (scoped, slash-separated) entry, as OpenFOAM's foamDictionary reads it."""
+    script = f'. "{ENV_SCRIPT}" && cd "{case}" && foamDictionary -entry "{entry}" -value "{file}"'
+    proc = subprocess.run(["bash", "-c", script], capture_output=True, text=True, check=False)
+    if proc.returncode != 0:
+        raise KeyError(f"{entry} in {case}/{file}: {proc.stderr.strip()[-300:]}")
+    return proc.stdout.strip()
+
+
+def dictionary_scalar(case: Path, file: str, entry: str) -> float:
+    """Numeric value of an entry; ``constant 7000`` and ``uniform 1300`` give 7000 and 1300."""
+    return float(dictionary_value(case, file, entry).split()[-1])

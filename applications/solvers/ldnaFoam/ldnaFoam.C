@@ -66,6 +66,8 @@ int main(int argc, char *argv[])
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+    #include "reportBalances.H"
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())

@@ -300,6 +300,7 @@ Foam::metalGasMixture::metalGasMixture
         dimensionedScalar(dimDynamicViscosity, Zero)
     ),
     pMin_("pMin", dimPressure, Zero),
+    sigmaModel_(surfaceTensionModel::New(*this, U.mesh())),
     Tsolidus_(0),
     Tliquidus_(0),
     latentHeat_(0),
@@ -402,6 +403,12 @@ Foam::scalar Foam::metalGasMixture::metalDensity
 Foam::scalar Foam::metalGasMixture::gasSensibleEnthalpy(const scalar T) const
 {
     return CpGas_->integrate(Tref, T);
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::sigma() const
+{
+    return sigmaModel_->sigma();
 }
 
 
@@ -644,7 +651,7 @@ bool Foam::metalGasMixture::read()
     if (regIOobject::read())
     {
         readCoeffs();
-        return interfaceProperties::read();
+        return interfaceProperties::read() && sigmaModel_->readDict(*this);
     }
     return false;
 }

@@ -1,0 +1,73 @@
+"""Fixtures of the ldnaFoam test suite: real cases run by the real solver.
+
+Each fixture copies a small case into a temporary directory, completes it
+with the numerics (and, where the test does not set its own, the material
+data) of the LDNA template so that the tests exercise what users run, and
+runs OpenFOAM's applications on it.  Tests skip nothing: without a built
+ldnaFoam the session fails.
+"""
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+import pytest
+
+PROJECT_DIR = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(PROJECT_DIR / "scripts"))
+
+from ldna.foamcase import copy_case, run  # noqa: E402
+
+TEST_CASES = Path(__file__).resolve().parent / "cases"
+TEMPLATE = PROJECT_DIR / "cases" / "ldna"
+
+
+def pytest_sessionstart(session: pytest.Session) -> None:
+    """Fail early and clearly when the solver has not been built."""
+    if not (PROJECT_DIR / "build" / "bin" / "ldnaFoam").exists():
+        raise pytest.UsageError("ldnaFoam is not built: run ./Allwmake (or bin/ldna-test)")
+
+
+def prepare_test_case(name: str, destination: Path, material_from_template: bool) -> Path:
+    """Copy tests/cases/<name> and add the template's fvSchemes and fvSolution.
+
+    With ``material_from_template`` the template's thermophysicalProperties
+    (316L and argon) are used as well.
+    """
+    case = copy_case(TEST_CASES / name, destination / name)
+    for file in ("fvSchemes", "fvSolution"):
+        shutil.copy(TEMPLATE / "system" / file, case / "system" / file)
+    if material_from_template:
+        shutil.copy(TEMPLATE / "constant" / "thermophysicalProperties",
+                    case / "constant" / "thermophysicalProperties")
+    return case
+
+
+@pytest.fixture
+def stefan_case(tmp_path: Path) -> Path:
+    """The meshed 1D melting bar (not yet run)."""
+    case = prepare_test_case("stefan1D", tmp_path, material_from_template=False)
+    run(case, "blockMesh")
+    return case
+
+
+@pytest.fixture
+def energy_box_case(tmp_path: Path) -> Path:
+    """The meshed closed box, metal below argon, with its heater zone (not yet run)."""
+    case = prepare_test_case("energyBox", tmp_path, material_from_template=True)
+    run(case, "blockMesh")
+    run(case, "topoSet")
+    run(case, "setFields")
+    return case
+
+
+@pytest.fixture
+def ldna_case(tmp_path: Path) -> Path:
+    """A copy of the LDNA template at resolution level 0, ASCII output (not yet meshed)."""
+    from ldna.foamdict import set_entry
+
+    case = copy_case(TEMPLATE, tmp_path / "ldna")
+    set_entry(case / "system" / "caseParameters", "level", "0")
+    set_entry(case / "system" / "controlDict", "writeFormat", "ascii")
+    return case

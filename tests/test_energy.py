@@ -1,0 +1,59 @@
+"""Energy conservation through melting in a closed adiabatic box.
+
+Metal (316L, lower half) under argon in a closed box with adiabatic walls is
+heated by a fixed source of known power P in a band at its bottom until the
+metal has melted through.  The change of the total enthalpy (sensible plus
+latent, both phases) must equal P t.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ldna.foamcase import alpha_bounds, dictionary_value, read_balances, read_internal_field, run
+
+#: Allowed relative error of the enthalpy balance (issue: 0.5 %)
+ENERGY_TOLERANCE = 0.005
+#: Allowed excursion of the metal fraction outside [0, 1]
+ALPHA_BOUND_TOLERANCE = 1e-6
+
+
+@pytest.mark.parametrize("density", ["temperature-dependent", "constant"])
+def test_enthalpy_change_equals_heat_input(energy_box_case: Path, density: str) -> None:
+    case = energy_box_case
+    props = case / "constant" / "thermophysicalProperties"
+    if density == "constant":
+        for phase in ("solid", "liquid"):
+            run(case, f"foamDictionary -entry metal/rho/{phase} -set 'constant 7500' {props}",
+                log_name=f"foamDictionary.{phase}")
+
+    run(case, "ldnaFoam")
+
+    power = float(dictionary_value(case, "constant/fvOptions",
+                                   "heater/injectionRateSuSp/T").strip("()").split()[0])
+    balances = read_balances(case / "log.ldnaFoam")
+    start, end = balances[0], balances[-1]
+    heat_in = power * (end["time"] - start["time"])
+    change = end["enthalpy"] - start["enthalpy"]
+    error = abs(change - heat_in) / heat_in
+    print(f"{density} density: enthalpy change {change:.4f} J, heat input {heat_in:.4f} J, "
+          f"error {100 * error:.4f} %")
+    assert error < ENERGY_TOLERANCE
+
+    # The metal has really gone through melting: half-way a front separates
+    # solid from liquid metal, at the end all metal is liquid ...
+    def metal_liquid_fraction(time: str) -> np.ndarray:
+        metal = read_internal_field(case / time / "alpha.metal") > 0.5
+        liquid = np.broadcast_to(read_internal_field(case / time / "liquidFraction"), metal.shape)
+        return liquid[metal]
+
+    half_way = metal_liquid_fraction("0.6")
+    assert half_way.max() > 0.99 and half_way.min() < 0.01
+    assert metal_liquid_fraction("1.2").min() > 0.99
+    # ... no cell of a heated adiabatic box cools below the start temperature
+    assert balances["T_min"].min() >= start["T_min"] - 1e-6 * start["T_min"]
+    # ... and the metal fraction stays bounded
+    low, high = alpha_bounds(case / "log.ldnaFoam")
+    assert low > -ALPHA_BOUND_TOLERANCE and high < 1 + ALPHA_BOUND_TOLERANCE

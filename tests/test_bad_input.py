@@ -1,0 +1,88 @@
+"""Bad input stops with an OpenFOAM FatalIOError naming the entry and range.
+
+Each case changes one entry of a valid small case (the 1D melting bar with
+the enthalpy-porosity effect listed) and runs ldnaFoam: the run must stop
+with a non-zero exit, a FOAM FATAL IO ERROR, the entry's name and the
+allowed range, and no crash.  The unchanged case must run.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ldna.foamcase import run
+from ldna.foamdict import set_entry
+
+FV_OPTIONS = "constant/fvOptions"
+THERMO = "constant/thermophysicalProperties"
+
+VALID_FV_OPTIONS = """FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }
+
+enthalpyPorosity
+{
+    type                enthalpyPorosity;
+    selectionMode       all;
+    mushyZoneConstant   1e8;
+    porosityEpsilon     1e-3;
+    weldingSpeed        constant 0.0075;
+    weldingDirection    (1 0 0);
+}
+"""
+
+# (description, file, entry, new value or None to remove, expected texts)
+BAD_INPUTS = [
+    ("negative welding speed", FV_OPTIONS, "enthalpyPorosity/weldingSpeed", "constant -0.0075",
+     ["weldingSpeed", ">= 0"]),
+    ("zero mushy-zone constant", FV_OPTIONS, "enthalpyPorosity/mushyZoneConstant", "0",
+     ["mushyZoneConstant", "> 0"]),
+    ("porosity epsilon above 1", FV_OPTIONS, "enthalpyPorosity/porosityEpsilon", "2",
+     ["porosityEpsilon", "(0, 1)"]),
+    ("zero welding direction", FV_OPTIONS, "enthalpyPorosity/weldingDirection", "(0 0 0)",
+     ["weldingDirection", "non-zero"]),
+    ("unknown effect", FV_OPTIONS, "enthalpyPorosity/type", "laserBeem",
+     ["laserBeem", "enthalpyPorosity"]),
+    ("solidus above liquidus", THERMO, "metal/solidus", "1200",
+     ["liquidus", "solidus", "must be above"]),
+    ("negative conductivity", THERMO, "metal/kappa/solid", "constant -5",
+     ["kappa", "solid", "must be positive", "-5"]),
+    ("negative latent heat", THERMO, "metal/latentHeat", "-1", ["latentHeat", ">= 0"]),
+    ("zero gas constant", THERMO, "gas/R", "0", ["'R'", "> 0"]),
+    ("missing solidus", THERMO, "metal/solidus", None, ["solidus"]),
+]
+
+
+@pytest.fixture
+def valid_case(stefan_case: Path) -> Path:
+    """The meshed melting bar, short, with the enthalpy-porosity effect."""
+    (stefan_case / FV_OPTIONS).write_text(VALID_FV_OPTIONS)
+    control = stefan_case / "system" / "controlDict"
+    set_entry(control, "endTime", "0.01")
+    control.write_text(control.read_text() + '\nlibs ("libldnaModels.so");\n')
+    return stefan_case
+
+
+def test_valid_case_runs(valid_case: Path) -> None:
+    result = run(valid_case, "ldnaFoam", check=False)
+    assert result.returncode == 0, result.output[-2000:]
+    assert "End" in result.output
+
+
+@pytest.mark.parametrize("description,file,entry,value,expected", BAD_INPUTS,
+                         ids=[b[0] for b in BAD_INPUTS])
+def test_bad_input_stops_with_named_error(valid_case: Path, description: str, file: str,
+                                          entry: str, value: str | None,
+                                          expected: list[str]) -> None:
+    edit = "-remove" if value is None else f"-set '{value}'"
+    run(valid_case, f"foamDictionary -entry '{entry}' {edit} {file}", log_name="foamDictionary")
+
+    result = run(valid_case, "ldnaFoam", check=False)
+    output = result.output
+    error = output[output.find("FOAM FATAL"):]
+    print(error[:600])
+    assert result.returncode != 0
+    assert "FOAM FATAL IO ERROR" in output
+    for text in expected:
+        assert text in error, f"'{text}' missing from the error message"
+    for crash in ("sigSegv", "Segmentation fault", "sigFpe", "nan"):
+        assert crash not in output

@@ -1,0 +1,60 @@
+"""Serial and MPI runs of the LDNA template agree within solver tolerance.
+
+The heated template scene (level 0) runs once serially and once on two
+ranks (decomposePar, mpirun -np 2, reconstructPar), with every linear solver
+converged to 1e-13 so that the decomposition can change the answer only at
+that level; the fields must then agree to well below any physical scale.
+"""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+
+from ldna.foamcase import read_internal_field, run, run_parallel, time_directories
+from ldna.foamdict import set_entry
+
+#: Linear-solver tolerance of both runs
+SOLVER_TOLERANCE = "1e-13"
+#: Allowed difference relative to each field's scale; measured about 1e-6
+#: for T and U with the tolerance above (1e-4 with the template's own)
+FIELD_TOLERANCE = 1e-5
+
+
+def tighten_solvers(case: Path) -> None:
+    """Converge every linear solver of the case to SOLVER_TOLERANCE."""
+    fv_solution = "system/fvSolution"
+    run(case, f"foamDictionary -entry solvers/p_rgh/relTol -set 0 {fv_solution}",
+        log_name="foamDictionary.relTol")
+    for solver in ("p_rgh", '"(U|T)"', '"alpha.metal.*"'):
+        run(case, f"foamDictionary -entry 'solvers/{solver}/tolerance' -set {SOLVER_TOLERANCE} "
+                  f"{fv_solution}", log_name="foamDictionary.tolerance")
+
+
+def test_serial_and_parallel_runs_agree(ldna_case: Path, tmp_path: Path) -> None:
+    serial = ldna_case
+    set_entry(serial / "system" / "controlDict", "endTime", "0.1")
+    set_entry(serial / "system" / "controlDict", "writeInterval", "0.1")
+    set_entry(serial / "system" / "controlDict", "writePrecision", "14")
+    tighten_solvers(serial)
+    for tool in ("blockMesh", "topoSet", "setFields"):
+        run(serial, tool)
+    parallel = Path(shutil.copytree(serial, tmp_path / "parallel"))
+
+    run(serial, "ldnaFoam")
+    run(parallel, "decomposePar")
+    run_parallel(parallel, "ldnaFoam", 2)
+    run(parallel, "reconstructPar -latestTime")
+
+    end_serial, end_parallel = time_directories(serial)[-1], time_directories(parallel)[-1]
+    assert end_serial.name == end_parallel.name == "0.1"
+    for field in ("T", "U", "alpha.metal", "p_rgh"):
+        a = read_internal_field(end_serial / field)
+        b = read_internal_field(end_parallel / field)
+        scale = np.abs(a).max()
+        difference = np.abs(a - b).max() / scale
+        print(f"{field}: largest difference {difference:.2e} of its scale {scale:.6g}")
+        assert difference < FIELD_TOLERANCE
+    # The scene is not trivial: it has heated up
+    assert read_internal_field(end_serial / "T").max() > 1000

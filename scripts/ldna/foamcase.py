@@ -19,9 +19,6 @@ import numpy as np
 PROJECT_DIR = Path(__file__).resolve().parents[2]
 ENV_SCRIPT = PROJECT_DIR / "bin" / "ldna-env"
 
-#: mpirun options: root in containers and more ranks than cores are common
-MPIRUN_OPTIONS = "--allow-run-as-root --oversubscribe"
-
 
 @dataclass
 class RunResult:
@@ -59,8 +56,8 @@ def run(case: Path, command: str, log_name: str | None = None, check: bool = Tru
 
 def run_parallel(case: Path, command: str, n_procs: int, log_name: str | None = None,
                  check: bool = True) -> RunResult:
-    """Run ``command -parallel`` on ``n_procs`` MPI ranks."""
-    return run(case, f"mpirun {MPIRUN_OPTIONS} -np {n_procs} {command} -parallel",
+    """Run ``command -parallel`` on ``n_procs`` MPI ranks (bin/ldna-env sets mpirun up)."""
+    return run(case, f"mpirun -np {n_procs} {command} -parallel",
                log_name=log_name or command.split()[0], check=check)
 
 

@@ -20,7 +20,9 @@ Description
     process (enthalpy-porosity, droplets, laser, Marangoni, evaporation,
     surface losses) enters through fvOptions listed by the case:
       - alpha.<metal> with density rho.<metal>: metal mass source [kg/m3/s]
-        (continuity, phase fraction and pressure equations)
+        (continuity, phase fraction and pressure equations); the metal
+        arrives at the local temperature, so a source alone neither heats
+        nor cools
       - U: momentum source [N/m3]
       - T: heat source [W/m3]
 

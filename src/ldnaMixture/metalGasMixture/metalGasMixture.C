@@ -533,7 +533,9 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
             gl = (Tnew - Ts)/dTm;
         }
 
-        maxChange = max(maxChange, mag(gl - gl0));
+        // Weighted by the metal fraction: a cell with a trace of metal may
+        // flip between solid and liquid without carrying latent heat
+        maxChange = max(maxChange, alpha1()[celli]*mag(gl - gl0));
         liquidFraction_[celli] = gl;
         T_[celli] = Tnew;
     }

@@ -1,0 +1,588 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "dropletSource.H"
+#include "metalGasMixture.H"
+#include "fvMatrices.H"
+#include "fvmSup.H"
+#include "boundBox.H"
+#include "unitConversion.H"
+#include "addToRunTimeSelectionTable.H"
+
+using Foam::constant::mathematical::pi;
+using Foam::constant::mathematical::twoPi;
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(dropletSource, 0);
+    addToRunTimeSelectionTable(option, dropletSource, dictionary);
+}
+}
+
+
+namespace
+{
+
+// Read a scalar entry and stop with the entry, the value and the allowed
+// range when it lies outside (low, high) (ends open or closed)
+Foam::scalar getInRange
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar low,
+    const bool lowClosed,
+    const Foam::scalar high,
+    const bool highClosed,
+    const Foam::scalar* deflt = nullptr
+)
+{
+    using namespace Foam;
+
+    const scalar value =
+        (deflt && !dict.found(key)) ? *deflt : dict.get<scalar>(key);
+
+    const bool aboveLow = lowClosed ? value >= low : value > low;
+    const bool belowHigh = highClosed ? value <= high : value < high;
+
+    if (!(aboveLow && belowHigh))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be in "
+            << (lowClosed ? "[" : "(") << low << ", " << high
+            << (highClosed ? "]" : ")") << ", not " << value
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fv::dropletSource::readCoeffs()
+{
+    const scalar inf = GREAT;
+
+    speed_ = getInRange(coeffs_, "speed", 0, true, inf, false);
+    parallelityFrequency_ =
+        getInRange(coeffs_, "parallelityFrequency", 0, false, inf, false);
+
+    const scalar zero = 0;
+    transverseAngle_ =
+        getInRange(coeffs_, "transverseAngle", -90, false, 90, false, &zero);
+
+    // eq. 33: alpha between 0 and 10 degrees
+    const scalar alphaMax = 10;
+    maxLongitudinalAngle_ = getInRange
+    (
+        coeffs_, "maxLongitudinalAngle", 0, true, 90, false, &alphaMax
+    );
+
+    // eq. 18: on while sin(2 pi nu t + arcsin 0.9) > 0.8
+    const scalar phase = radToDeg(asin(0.9));
+    switchPhase_ = degToRad
+    (
+        getInRange(coeffs_, "switchPhase", -inf, false, inf, false, &phase)
+    );
+    const scalar threshold = 0.8;
+    switchThreshold_ =
+        getInRange(coeffs_, "switchThreshold", -1, false, 1, false, &threshold);
+
+    irregularityTime_ =
+        getInRange(coeffs_, "irregularityTime", 0, true, inf, false, &zero);
+    const scalar diameterFactor = 2;
+    irregularDiameterFactor_ = getInRange
+    (
+        coeffs_, "irregularDiameterFactor", 0, false, inf, false,
+        &diameterFactor
+    );
+    // The paper adds 0.5 in the units of d_d, which its figures give in mm
+    const scalar spacingIncrease = 0.5e-3;
+    irregularSpacingIncrease_ = getInRange
+    (
+        coeffs_, "irregularSpacingIncrease", 0, true, inf, false,
+        &spacingIncrease
+    );
+
+    alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
+    UName_ = coeffs_.lookupOrDefault<word>("U", "U");
+    TName_ = coeffs_.lookupOrDefault<word>("T", "T");
+    log_ = coeffs_.lookupOrDefault<bool>("log", true);
+
+    fieldNames_.setSize(3);
+    fieldNames_[0] = alphaName_;
+    fieldNames_[1] = UName_;
+    fieldNames_[2] = TName_;
+    applied_.setSize(fieldNames_.size(), false);
+
+    const scalar wireDensity =
+        getInRange(coeffs_, "wireDensity", 0, false, inf, false);
+    const vector position0 = coeffs_.get<vector>("position");
+    const scalar wireSpacing =
+        getInRange(coeffs_, "wireSpacing", 0, true, inf, false);
+    const vector spacingDirection(1, 0, 0);
+
+    const metalGasMixture& mixture =
+        mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
+
+    const boundBox bounds(mesh_.points(), true);
+    const scalar domainSize = cmptMin(bounds.span());
+
+    const dictionary& wiresDict = coeffs_.subDict("wires");
+    wires_.setSize(wiresDict.size());
+    if (wires_.empty())
+    {
+        FatalIOErrorInFunction(wiresDict)
+            << "Entry 'wires' must hold at least one wire dictionary"
+            << exit(FatalIOError);
+    }
+
+    const bool irregularStart =
+        irregularityTime_ > mesh_.time().startTime().value();
+
+    label k = 0;
+    for (const entry& e : wiresDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(wiresDict)
+                << "Entry '" << e.keyword() << "' in 'wires' must be a"
+                << " dictionary of one wire" << exit(FatalIOError);
+        }
+        const dictionary& dict = e.dict();
+        wireStream& wire = wires_[k];
+
+        wire.name = e.keyword();
+        wire.wireRadius = getInRange(dict, "wireRadius", 0, false, inf, false);
+        wire.feedSpeed = getInRange(dict, "feedSpeed", 0, false, inf, false);
+        wire.wireDensity = getInRange
+        (
+            dict, "wireDensity", 0, false, inf, false, &wireDensity
+        );
+
+        const scalar wireVolumeRate =
+            wire.feedSpeed*pi*sqr(wire.wireRadius);
+        const bool hasRadius = dict.found("dropletRadius");
+        const bool hasFrequency = dict.found("detachmentFrequency");
+        if (hasRadius == hasFrequency)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Give exactly one of 'dropletRadius' and"
+                << " 'detachmentFrequency' for wire " << wire.name
+                << " (the other follows from eq. 16)" << exit(FatalIOError);
+        }
+        if (hasRadius)
+        {
+            wire.dropletRadius =
+                getInRange(dict, "dropletRadius", 0, false, inf, false);
+            wire.frequency =
+                wireVolumeRate/(4.0/3.0*pi*pow3(wire.dropletRadius));
+        }
+        else
+        {
+            wire.frequency =
+                getInRange(dict, "detachmentFrequency", 0, false, inf, false);
+            wire.dropletRadius =
+                cbrt(3*wireVolumeRate/wire.frequency/(4*pi));
+        }
+
+        const scalar largest =
+            2*wire.dropletRadius*(irregularStart ? irregularDiameterFactor_ : 1);
+        if (largest >= domainSize)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The droplets of wire " << wire.name << " ("
+                << largest << " m across) must be smaller than the domain,"
+                << " whose smallest extent is " << domainSize << " m"
+                << exit(FatalIOError);
+        }
+
+        const scalar dropletTemperature = 2100;
+        wire.temperature = getInRange
+        (
+            dict, "temperature", 0, false, inf, false, &dropletTemperature
+        );
+        wire.enthalpy =
+            mixture.metalSensibleEnthalpy(wire.temperature)
+          + mixture.equilibriumLiquidFraction(wire.temperature)
+           *mixture.latentHeat();
+
+        wire.position =
+            dict.found("position")
+          ? dict.get<vector>("position")
+          : position0 + k*wireSpacing*spacingDirection;
+
+        const scalar sign = (k % 2 == 0) ? -1 : 1;
+        wire.longitudinalSign = dict.lookupOrDefault<scalar>
+        (
+            "longitudinalSign", sign
+        );
+        if (mag(mag(wire.longitudinalSign) - 1) > SMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'longitudinalSign' must be -1 or 1, not "
+                << wire.longitudinalSign << exit(FatalIOError);
+        }
+
+        wire.regular = footprint(wire, wire.position, wire.dropletRadius);
+        if (irregularStart)
+        {
+            wire.irregular = footprint
+            (
+                wire,
+                wire.position + k*irregularSpacingIncrease_*spacingDirection,
+                irregularDiameterFactor_*wire.dropletRadius
+            );
+        }
+
+        wire.addedMass = 0;
+        wire.onTime = 0;
+
+        Info<< "    " << name_ << " wire " << wire.name
+            << ": mass rate " << wire.massRate() << " kg/s, droplet radius "
+            << wire.dropletRadius << " m, frequency " << wire.frequency
+            << " 1/s, droplet mass " << wire.massRate()/wire.frequency
+            << " kg at " << wire.temperature << " K (enthalpy "
+            << wire.enthalpy << " J/kg), source at " << wire.position
+            << ", duty fraction " << dutyFraction()
+            << ", pulse mass rate " << wire.massRate()/dutyFraction()
+            << " kg/s" << endl;
+
+        ++k;
+    }
+}
+
+
+Foam::fv::dropletSource::gaussianFootprint
+Foam::fv::dropletSource::footprint
+(
+    const wireStream& wire,
+    const vector& centre,
+    const scalar R
+) const
+{
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+
+    // exp(-3 r^2/R^2) is 6e-6 at twice the radius
+    const scalar cutoff2 = sqr(2*R);
+
+    DynamicList<label> cells;
+    DynamicList<scalar> weights;
+    forAll(C, celli)
+    {
+        const scalar r2 = magSqr(C[celli] - centre);
+        if (r2 < cutoff2)
+        {
+            cells.append(celli);
+            weights.append(exp(-3*r2/sqr(R)));
+        }
+    }
+
+    scalar total = 0;
+    forAll(cells, i)
+    {
+        total += weights[i]*V[cells[i]];
+    }
+    reduce(total, sumOp<scalar>());
+
+    // A droplet smaller than the cells: the cell containing its centre
+    const bool resolved = total > 0;
+    if (!resolved)
+    {
+        cells.clear();
+        weights.clear();
+        const label celli = mesh_.findCell(centre);
+        if (celli != -1)
+        {
+            cells.append(celli);
+            weights.append(1);
+            total = V[celli];
+        }
+        reduce(total, sumOp<scalar>());
+    }
+
+    if (!(total > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "The droplet source of wire " << wire.name << " at " << centre
+            << " m is outside the mesh, whose bounds are "
+            << boundBox(mesh_.points(), true) << exit(FatalIOError);
+    }
+
+    gaussianFootprint fp;
+    fp.cells.transfer(cells);
+    fp.weights.transfer(weights);
+    fp.weights /= total;
+
+    // The discrete integral over the analytic one, pi^1.5 R^3/(3 sqrt 3)
+    const scalar analytic = pow(pi, 1.5)*pow3(R)/(3*sqrt(3.0));
+    Info<< "    " << name_ << " wire " << wire.name << ": droplet of radius "
+        << R << " m on " << returnReduce(fp.cells.size(), sumOp<label>())
+        << " cells, discrete/analytic Gaussian integral "
+        << (resolved ? total/analytic : 0)
+        << (resolved ? "" : " (unresolved: one cell)") << endl;
+
+    return fp;
+}
+
+
+Foam::scalar Foam::fv::dropletSource::switchOnTime
+(
+    const scalar nu,
+    const scalar t0,
+    const scalar t1
+) const
+{
+    // In the phase phi = 2 pi nu t + xi the switch is on for
+    // phi mod 2 pi in (asin theta, pi - asin theta)
+    const scalar a = asin(switchThreshold_);
+    const scalar width = pi - 2*a;
+
+    auto onPhase = [&](const scalar phi)
+    {
+        const scalar periods = floor(phi/twoPi);
+        const scalar r = phi - periods*twoPi;
+        return periods*width + min(max(r - a, scalar(0)), width);
+    };
+
+    const scalar phi0 = twoPi*nu*t0 + switchPhase_;
+    const scalar phi1 = twoPi*nu*t1 + switchPhase_;
+
+    return (onPhase(phi1) - onPhase(phi0))/(twoPi*nu);
+}
+
+
+Foam::vector Foam::fv::dropletSource::dropletVelocity
+(
+    const wireStream& wire,
+    const scalar t
+) const
+{
+    const scalar nuP = parallelityFrequency_;
+    const scalar alpha = degToRad
+    (
+        0.5*maxLongitudinalAngle_*(sin(twoPi*nuP*(t - 0.25/nuP)) + 1)
+    );
+    const scalar beta = degToRad(transverseAngle_);
+
+    const scalar vxz = speed_*cos(beta);
+    return vector
+    (
+        wire.longitudinalSign*vxz*sin(alpha),
+        speed_*sin(beta),
+       -vxz*cos(alpha)
+    );
+}
+
+
+void Foam::fv::dropletSource::deposit
+(
+    const gaussianFootprint& fp,
+    const scalar massRate,
+    const vector& velocity,
+    const scalar enthalpy
+)
+{
+    forAll(fp.cells, i)
+    {
+        const label celli = fp.cells[i];
+        const scalar S = massRate*fp.weights[i];
+        massSource_[celli] += S;
+        momentumSource_[celli] += S*velocity;
+        enthalpySource_[celli] += S*enthalpy;
+    }
+}
+
+
+void Foam::fv::dropletSource::update()
+{
+    const Time& time = mesh_.time();
+    if (timeIndex_ == time.timeIndex())
+    {
+        return;
+    }
+    timeIndex_ = time.timeIndex();
+
+    massSource_ = 0;
+    enthalpySource_ = 0;
+    momentumSource_ = Zero;
+
+    const scalar t1 = time.value();
+    const scalar dt = time.deltaTValue();
+    const scalar t0 = t1 - dt;
+    const scalar ti = irregularityTime_;
+
+    for (wireStream& wire : wires_)
+    {
+        // Mass rate while the switch is on: one droplet per pulse
+        const scalar pulseRate = wire.massRate()/dutyFraction();
+
+        // Irregular start, then regular droplets
+        const scalar bounds[3] = {t0, min(max(ti, t0), t1), t1};
+        for (label segment = 0; segment < 2; ++segment)
+        {
+            const scalar ta = bounds[segment];
+            const scalar tb = bounds[segment + 1];
+            if (tb <= ta)
+            {
+                continue;
+            }
+
+            const bool irregular = segment == 0;
+            const scalar on = switchOnTime(wire.frequency, ta, tb);
+            const scalar mass =
+                pulseRate*on*(irregular ? pow3(irregularDiameterFactor_) : 1);
+
+            if (mass > 0)
+            {
+                deposit
+                (
+                    irregular ? wire.irregular : wire.regular,
+                    mass/dt,
+                    dropletVelocity(wire, 0.5*(ta + tb)),
+                    wire.enthalpy
+                );
+            }
+
+            wire.addedMass += mass;
+            wire.onTime += on;
+        }
+
+        if (log_)
+        {
+            const scalar elapsed = t1 - time.startTime().value();
+            Info<< type() << ' ' << name_ << ": wire " << wire.name
+                << " added mass = " << wire.addedMass
+                << " kg, on time = " << wire.onTime
+                << " s, duty fraction = "
+                << (elapsed > 0 ? wire.onTime/elapsed : 0) << endl;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fv::dropletSource::dropletSource
+(
+    const word& sourceName,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(sourceName, modelType, dict, mesh),
+    speed_(0),
+    transverseAngle_(0),
+    maxLongitudinalAngle_(0),
+    parallelityFrequency_(0),
+    switchPhase_(0),
+    switchThreshold_(0),
+    irregularityTime_(0),
+    irregularDiameterFactor_(1),
+    irregularSpacingIncrease_(0),
+    log_(true),
+    timeIndex_(-1),
+    massSource_(mesh.nCells(), Zero),
+    enthalpySource_(mesh.nCells(), Zero),
+    momentumSource_(mesh.nCells(), Zero)
+{
+    readCoeffs();
+}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::fv::dropletSource::dutyFraction() const
+{
+    return (pi - 2*asin(switchThreshold_))/twoPi;
+}
+
+
+void Foam::fv::dropletSource::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<scalar>& eqn,
+    const label fieldi
+)
+{
+    update();
+
+    const dimensionSet sourceDims(eqn.dimensions()/dimVolume);
+
+    if (fieldi == 0)
+    {
+        // Metal mass [kg/m3/s]
+        DimensionedField<scalar, volMesh> S
+        (
+            IOobject(name_ + ":massSource", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedScalar(sourceDims, Zero)
+        );
+        S.field() = massSource_;
+        eqn += S;
+    }
+    else if (fieldi == 2)
+    {
+        // The solver lets added metal arrive at the enthalpy h1 of the cell
+        // at the current iterate; the droplet brings h1(T_d): the difference
+        // S (h1(T_d) - h1), explicit, so that the energy added in the step
+        // is exactly S h1(T_d) and the liquid-fraction projection of the
+        // solver decides how the cell melts
+        const metalGasMixture& mixture =
+            mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
+        const volScalarField h1(mixture.h1());
+
+        DimensionedField<scalar, volMesh> Su
+        (
+            IOobject(name_ + ":enthalpySource", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedScalar(sourceDims, Zero)
+        );
+        Su.field() = enthalpySource_ - massSource_*h1.primitiveField();
+
+        eqn += Su;
+    }
+}
+
+
+void Foam::fv::dropletSource::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    update();
+
+    DimensionedField<vector, volMesh> S
+    (
+        IOobject(name_ + ":momentumSource", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector(eqn.dimensions()/dimVolume, Zero)
+    );
+    S.field() = momentumSource_;
+    eqn += S;
+}
+
+
+bool Foam::fv::dropletSource::read(const dictionary& dict)
+{
+    if (option::read(dict))
+    {
+        readCoeffs();
+        return true;
+    }
+
+    return false;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,21 @@
+/*--------------------------------*- C++ -*----------------------------------*\
+  ldnaFoam test case: droplets from two wires into a closed box
+\*---------------------------------------------------------------------------*/
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       volScalarField;
+    location    "0";
+    object      alpha.metal;
+}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+dimensions      [0 0 0 0 0 0 0];
+internalField   uniform 0;
+boundaryField
+{
+    walls { type zeroGradient; }
+}
+
+// ************************************************************************* //

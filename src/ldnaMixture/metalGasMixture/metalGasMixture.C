@@ -122,14 +122,16 @@ void Foam::metalGasMixture::readCoeffs()
 }
 
 
-Foam::scalar Foam::metalGasMixture::latentSlope(const label celli) const
+Foam::scalar Foam::metalGasMixture::latentSlope
+(
+    const label celli,
+    const scalar m1
+) const
 {
     const scalar gl = liquidFraction_[celli];
     if (gl > 0 && gl < 1)
     {
-        return
-            alpha1()[celli]*rho1_[celli]*latentHeat_
-           /(Tliquidus_ - Tsolidus_);
+        return m1*latentHeat_/(Tliquidus_ - Tsolidus_);
     }
     return 0;
 }
@@ -470,15 +472,25 @@ Foam::metalGasMixture::volumetricEnthalpy() const
 }
 
 
-Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity() const
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
+(
+    const scalarField& m1,
+    const scalarField& m2
+) const
 {
-    tmp<volScalarField> tC(alpha1()*rho1_*Cp1() + alpha2()*rho2_*Cp2());
+    tmp<volScalarField> tC(Cp1());
     volScalarField& C = tC.ref();
+    C.rename("rhoCp");
+    C.dimensions().reset(dimEnergy/dimVolume/dimTemperature);
 
+    const volScalarField Cp2Field(Cp2());
     forAll(C, celli)
     {
-        C[celli] += latentSlope(celli);
+        C[celli] =
+            m1[celli]*C[celli] + m2[celli]*Cp2Field[celli]
+          + latentSlope(celli, m1[celli]);
     }
+    C.boundaryFieldRef() = Zero;
 
     return tC;
 }
@@ -492,7 +504,9 @@ void Foam::metalGasMixture::correct()
 
 Foam::scalar Foam::metalGasMixture::correctLiquidFraction
 (
-    const volScalarField& Tstar
+    const volScalarField& Tstar,
+    const scalarField& m1,
+    const scalarField& m2
 )
 {
     const scalar Ts = Tsolidus_;
@@ -500,36 +514,38 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
     const scalar dTm = Tl - Ts;
     const scalar L = latentHeat_;
 
-    const volScalarField C(alpha1()*rho1_*Cp1() + alpha2()*rho2_*Cp2());
+    const volScalarField Cp1Field(Cp1());
+    const volScalarField Cp2Field(Cp2());
 
     scalar maxChange = 0;
 
     forAll(T_, celli)
     {
-        const scalar m = alpha1()[celli]*rho1_[celli];
+        const scalar m = m1[celli];
+        const scalar C = m*Cp1Field[celli] + m2[celli]*Cp2Field[celli];
         const scalar gl0 = liquidFraction_[celli];
         const scalar Tc = T_[celli];
 
         // Local enthalpy as the energy equation linearised it about Tstar,
         // kept by the projection: C T' + m L F(T') = H
         const scalar H =
-            C[celli]*Tc + m*L*gl0 + latentSlope(celli)*(Tc - Tstar[celli]);
+            C*Tc + m*L*gl0 + latentSlope(celli, m)*(Tc - Tstar[celli]);
 
         scalar gl;
         scalar Tnew;
-        if (H <= C[celli]*Ts)
+        if (H <= C*Ts)
         {
             gl = 0;
-            Tnew = H/C[celli];
+            Tnew = H/C;
         }
-        else if (H >= C[celli]*Tl + m*L)
+        else if (H >= C*Tl + m*L)
         {
             gl = 1;
-            Tnew = (H - m*L)/C[celli];
+            Tnew = (H - m*L)/C;
         }
         else
         {
-            Tnew = (H + m*L*Ts/dTm)/(C[celli] + m*L/dTm);
+            Tnew = (H + m*L*Ts/dTm)/(C + m*L/dTm);
             gl = (Tnew - Ts)/dTm;
         }
 

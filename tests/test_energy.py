@@ -20,11 +20,16 @@ ENERGY_TOLERANCE = 0.005
 ALPHA_BOUND_TOLERANCE = 1e-6
 
 
-@pytest.mark.parametrize("density", ["temperature-dependent", "constant"])
+@pytest.mark.parametrize("density", ["Boussinesq", "variable", "constant"])
 def test_enthalpy_change_equals_heat_input(energy_box_case: Path, density: str) -> None:
     case = energy_box_case
     props = case / "constant" / "thermophysicalProperties"
+    if density == "variable":
+        run(case, f"foamDictionary -entry metal/densityModel -set variable {props}",
+            log_name="foamDictionary.densityModel")
     if density == "constant":
+        run(case, f"foamDictionary -entry metal/densityModel -set variable {props}",
+            log_name="foamDictionary.densityModel")
         for phase in ("solid", "liquid"):
             run(case, f"foamDictionary -entry metal/rho/{phase} -set 'constant 7500' {props}",
                 log_name=f"foamDictionary.{phase}")

@@ -102,6 +102,7 @@ int main(int argc, char *argv[])
             }
         }
 
+        #include "metalVolumeCorrection.H"
         #include "reportBalances.H"
 
         runTime.write();

@@ -63,6 +63,34 @@ void Foam::metalGasMixture::readCoeffs()
 
     const dictionary& metal = subDict(phase1Name());
 
+    const word densityModel
+    (
+        metal.lookupOrDefault<word>("densityModel", "Boussinesq")
+    );
+    if (densityModel != "Boussinesq" && densityModel != "variable")
+    {
+        FatalIOErrorInFunction(metal)
+            << "Entry 'densityModel' must be Boussinesq or variable, not "
+            << densityModel << exit(FatalIOError);
+    }
+    Boussinesq_ = densityModel == "Boussinesq";
+    if (Boussinesq_)
+    {
+        referenceDensity_ = metal.get<scalar>("referenceDensity");
+        if (!(referenceDensity_ > 0))
+        {
+            FatalIOErrorInFunction(metal)
+                << "Entry 'referenceDensity' must be > 0 kg/m3, not "
+                << referenceDensity_ << exit(FatalIOError);
+        }
+    }
+    Info<< "    metal density: " << densityModel;
+    if (Boussinesq_)
+    {
+        Info<< ", " << referenceDensity_ << " kg/m3 for mass and inertia";
+    }
+    Info<< endl;
+
     Tsolidus_ = metal.get<scalar>("solidus");
     Tliquidus_ = metal.get<scalar>("liquidus");
     latentHeat_ = metal.get<scalar>("latentHeat");
@@ -257,6 +285,17 @@ Foam::metalGasMixture::metalGasMixture
         U.mesh(),
         dimensionedScalar(dimDensity, Zero)
     ),
+    rho1Gravity_
+    (
+        IOobject
+        (
+            IOobject::groupName("rhoGravity", phase1Name()),
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimDensity, Zero)
+    ),
     rho2_
     (
         IOobject
@@ -302,6 +341,8 @@ Foam::metalGasMixture::metalGasMixture
         dimensionedScalar(dimDynamicViscosity, Zero)
     ),
     pMin_("pMin", dimPressure, Zero),
+    Boussinesq_(true),
+    referenceDensity_(0),
     sigmaModel_(surfaceTensionModel::New(*this, U.mesh())),
     Tsolidus_(0),
     Tliquidus_(0),
@@ -465,6 +506,12 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho() const
 }
 
 
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rhoGravity() const
+{
+    return alpha1()*rho1Gravity_ + alpha2()*rho2_;
+}
+
+
 Foam::tmp<Foam::volScalarField>
 Foam::metalGasMixture::volumetricEnthalpy() const
 {
@@ -581,12 +628,21 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
 
 void Foam::metalGasMixture::correctThermo()
 {
-    rho1_ = evaluate
+    rho1Gravity_ = evaluate
     (
         "rho1",
         dimDensity,
         [&](scalar T, scalar gl) { return metalDensity(T, gl); }
     );
+    if (Boussinesq_)
+    {
+        rho1_ =
+            dimensionedScalar("referenceDensity", dimDensity, referenceDensity_);
+    }
+    else
+    {
+        rho1_ = rho1Gravity_;
+    }
 
     psi2_ = evaluate
     (

@@ -1,0 +1,214 @@
+"""Droplet transfer from two wires (paper eq. 14-33) in a closed box of argon.
+
+The dropletSource model of the case (constant/fvOptions) adds Gaussian,
+time-switched metal mass with the droplet velocity and the enthalpy of metal
+at the droplet temperature.  Checked against quantities computed here,
+independently of the solver, from the case's own dictionaries:
+
+- mass: after ten droplet periods the metal in the box equals
+  rho_w v_w pi R_w^2 t per wire within 1 %;
+- duty fraction of the default switch: 0.2048 +- 0.002;
+- energy: the enthalpy added equals the mass added times h(T_droplet) within
+  1 % (h from the 316L data, latent heat included);
+- momentum: without gravity and before anything reaches a wall, the metal's
+  momentum equals the integral of mass rate times droplet velocity within 2 %;
+- boundedness: alpha stays within [-1e-6, 1 + 1e-6], no field is NaN.
+"""
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conftest import prepare_test_case
+from ldna.foamcase import (alpha_bounds, dictionary_scalar, dictionary_value,
+                           read_balances, read_internal_field, run, time_directories)
+from ldna.foamdict import set_entry
+from ldna.material import Metal
+
+MASS_TOLERANCE = 0.01
+ENERGY_TOLERANCE = 0.01
+MOMENTUM_TOLERANCE = 0.02
+#: eq. 18: (pi - 2 asin 0.8)/(2 pi)
+DEFAULT_DUTY_FRACTION = (math.pi - 2 * math.asin(0.8)) / (2 * math.pi)
+DUTY_TOLERANCE = 0.002
+ALPHA_BOUND = 1e-6
+
+SOURCE = "constant/fvOptions"
+
+
+def wire_names(case: Path) -> list[str]:
+    """Names of the wire dictionaries of the droplet source."""
+    text = dictionary_value(case, SOURCE, "wireDroplets/wires")
+    return re.findall(r"^\s*(\w+)\s*$", text, re.M)
+
+
+def wire_mass_rate(case: Path, wire: str) -> float:
+    """rho_w v_w pi R_w^2 of a wire [kg/s], from the case dictionary."""
+    density = dictionary_scalar(case, SOURCE, "wireDroplets/wireDensity")
+    feed = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/feedSpeed")
+    radius = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/wireRadius")
+    return density * feed * math.pi * radius**2
+
+
+def logged_wire_values(log: Path, wire: str, key: str) -> np.ndarray:
+    """Per-step values the droplet source logs for a wire (added mass, on time ...)."""
+    pattern = rf"wire {wire} added mass = (\S+) kg, on time = (\S+) s, duty fraction = (\S+)"
+    column = {"added mass": 0, "on time": 1, "duty fraction": 2}[key]
+    return np.array([float(m[column]) for m in re.findall(pattern, log.read_text())])
+
+
+def finite_fields(time_dir: Path) -> bool:
+    """Whether T, U, p_rgh and alpha.metal hold only finite numbers."""
+    return all(np.all(np.isfinite(read_internal_field(time_dir / f)))
+               for f in ("T", "U", "p_rgh", "alpha.metal"))
+
+
+@pytest.fixture
+def droplet_case(tmp_path: Path) -> Path:
+    """The meshed closed box of argon under two wires."""
+    case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
+    run(case, "blockMesh")
+    return case
+
+
+def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
+    case = droplet_case
+    run(case, "ldnaFoam")
+    log = case / "log.ldnaFoam"
+    balances = read_balances(log)
+    start, end = balances[0], balances[-1]
+    elapsed = end["time"] - start["time"]
+    wires = wire_names(case)
+    assert len(wires) == 2
+
+    # Mass: what the box holds against what the wires feed
+    expected = sum(wire_mass_rate(case, w) for w in wires) * elapsed
+    gained = end["metal_mass"] - start["metal_mass"]
+    mass_error = abs(gained - expected) / expected
+    print(f"metal gained {gained:.6e} kg, wires fed {expected:.6e} kg: {100 * mass_error:.3f} %")
+    assert mass_error < MASS_TOLERANCE
+
+    # The default switch is on 20.48 % of the time
+    for wire in wires:
+        duty = logged_wire_values(log, wire, "duty fraction")[-1]
+        print(f"{wire}: duty fraction {duty:.5f}")
+        assert abs(duty - DEFAULT_DUTY_FRACTION) < DUTY_TOLERANCE
+
+    # Energy: the closed adiabatic box gains the enthalpy of the droplet metal
+    metal = Metal.from_case(case)
+    added_enthalpy = 0.0
+    for wire in wires:
+        temperature = float(dictionary_value(case, SOURCE, f"wireDroplets/wires/{wire}/temperature")) \
+            if "temperature" in dictionary_value(case, SOURCE, f"wireDroplets/wires/{wire}") else 2100.0
+        added_enthalpy += logged_wire_values(log, wire, "added mass")[-1] * metal.enthalpy(temperature)
+    enthalpy_change = end["enthalpy"] - start["enthalpy"]
+    energy_error = abs(enthalpy_change - added_enthalpy) / added_enthalpy
+    print(f"enthalpy change {enthalpy_change:.4f} J, droplet enthalpy {added_enthalpy:.4f} J: "
+          f"{100 * energy_error:.3f} %")
+    assert energy_error < ENERGY_TOLERANCE
+
+    # Bounded, finite
+    low, high = alpha_bounds(log)
+    print(f"alpha within [{low:.3e}, {high:.6f}]")
+    assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
+    assert finite_fields(time_directories(case)[-1])
+
+
+def expected_momentum(case: Path, t_end: float, samples: int = 200_000) -> np.ndarray:
+    """Integral over [0, t_end] of mass rate times droplet velocity, summed over wires.
+
+    Independent of the solver: the switch of eq. 18 and the velocity of
+    eq. 28-33 evaluated on a fine time grid.
+    """
+    def get(entry: str, default: float | None = None) -> float:
+        try:
+            return dictionary_scalar(case, SOURCE, f"wireDroplets/{entry}")
+        except KeyError:
+            if default is None:
+                raise
+            return default
+
+    speed = get("speed")
+    beta = math.radians(get("transverseAngle", 0.0))
+    alpha_max = get("maxLongitudinalAngle", 10.0)
+    nu_p = get("parallelityFrequency")
+    t = (np.arange(samples) + 0.5) * t_end / samples
+    dt = t_end / samples
+    alpha = np.radians(0.5 * alpha_max * (np.sin(2 * np.pi * nu_p * (t - 0.25 / nu_p)) + 1))
+    v_xz = speed * math.cos(beta)
+    total = np.zeros(3)
+    for k, wire in enumerate(wire_names(case)):
+        nu = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/detachmentFrequency")
+        on = np.sin(2 * np.pi * nu * t + math.asin(0.9)) > 0.8
+        pulse_rate = wire_mass_rate(case, wire) / DEFAULT_DUTY_FRACTION
+        sign = -1.0 if k % 2 == 0 else 1.0
+        velocity = np.stack([sign * v_xz * np.sin(alpha),
+                             np.full_like(t, speed * math.sin(beta)),
+                             -v_xz * np.cos(alpha)])
+        total += (pulse_rate * on * velocity).sum(axis=1) * dt
+    return total
+
+
+def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
+    case = droplet_case
+    (case / "constant" / "g").write_text(
+        (case / "constant" / "g").read_text().replace("(0 0 -9.81)", "(0 0 0)"))
+    # Two droplet periods: the first droplet travels about 8 mm, the source
+    # is 13 mm above the floor
+    t_end = 0.02
+    set_entry(case / "system" / "controlDict", "endTime", str(t_end))
+    set_entry(case / "system" / "controlDict", "writeInterval", str(t_end))
+    run(case, "ldnaFoam")
+    run(case, "postProcess -func writeCellVolumes -latestTime", log_name="writeCellVolumes")
+
+    last = time_directories(case)[-1]
+    metal = Metal.from_case(case)
+    volume = read_internal_field(last / "V")
+    alpha = read_internal_field(last / "alpha.metal")
+    temperature = read_internal_field(last / "T")
+    liquid = np.broadcast_to(read_internal_field(last / "liquidFraction"), alpha.shape)
+    velocity = read_internal_field(last / "U")
+    rho_metal = np.array([metal.density(T, g) for T, g in zip(temperature, liquid)])
+    metal_momentum = ((alpha * rho_metal * volume)[:, None] * velocity).sum(axis=0)
+
+    expected = expected_momentum(case, t_end)
+    error = np.linalg.norm(metal_momentum - expected) / np.linalg.norm(expected)
+    print(f"metal momentum {metal_momentum} kg m/s, injected {expected} kg m/s: "
+          f"{100 * error:.2f} %")
+    assert error < MOMENTUM_TOLERANCE
+    # Nothing reached a wall: no metal in the lowest 2 mm
+    centres_z = None
+    low, high = alpha_bounds(case / "log.ldnaFoam")
+    assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
+
+
+BAD_INPUTS = [
+    ("negative feed speed", "wireDroplets/wires/wire1/feedSpeed", "-0.1", ["feedSpeed", "(0,"]),
+    ("droplet larger than the domain", "wireDroplets/wires/wire1/detachmentFrequency", "0.001",
+     ["smaller than the domain"]),
+    ("source outside the mesh", "wireDroplets/position", "(0.0035 0 0.05)", ["outside the mesh"]),
+    ("both radius and frequency", "wireDroplets/wires/wire1/dropletRadius", "0.7e-3",
+     ["exactly one of"]),
+    ("switch threshold out of range", "wireDroplets/switchThreshold", "1.5",
+     ["switchThreshold", "(-1, 1)"]),
+]
+
+
+@pytest.mark.parametrize("description,entry,value,expected", BAD_INPUTS,
+                         ids=[b[0] for b in BAD_INPUTS])
+def test_bad_droplet_input(droplet_case: Path, description: str, entry: str, value: str,
+                           expected: list[str]) -> None:
+    run(droplet_case, f"foamDictionary -entry '{entry}' -set '{value}' {SOURCE}",
+        log_name="foamDictionary")
+    result = run(droplet_case, "ldnaFoam", check=False)
+    error = result.output[result.output.find("FOAM FATAL"):]
+    print(error[:500])
+    assert result.returncode != 0
+    assert "FOAM FATAL IO ERROR" in result.output
+    for text in expected:
+        assert text in error
+    assert "sigSegv" not in result.output

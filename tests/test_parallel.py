@@ -4,6 +4,12 @@ The heated template scene (level 0) runs once serially and once on two
 ranks (decomposePar, mpirun -np 2, reconstructPar), with every linear solver
 converged to 1e-13 so that the decomposition can change the answer only at
 that level; the fields must then agree to well below any physical scale.
+
+The comparison is at 0.05 s (946 K).  Later the gas plume above the
+1.5 kW source becomes unstable and amplifies round-off like any physical
+instability: measured differences in U grow from 1.6e-8 after five steps
+and 5.9e-7 at 0.05 s to 3e-3 at 0.1 s (1370 K), in serial-to-serial terms
+a chaotic flow, not a decomposition error.
 """
 from __future__ import annotations
 
@@ -15,6 +21,8 @@ import numpy as np
 from ldna.foamcase import read_internal_field, run, run_parallel, time_directories
 from ldna.foamdict import set_entry
 
+#: Time of the comparison [s]
+END_TIME = "0.05"
 #: Linear-solver tolerance of both runs
 SOLVER_TOLERANCE = "1e-13"
 #: Allowed difference relative to each field's scale; measured about 1e-6
@@ -34,8 +42,8 @@ def tighten_solvers(case: Path) -> None:
 
 def test_serial_and_parallel_runs_agree(ldna_case: Path, tmp_path: Path) -> None:
     serial = ldna_case
-    set_entry(serial / "system" / "controlDict", "endTime", "0.1")
-    set_entry(serial / "system" / "controlDict", "writeInterval", "0.1")
+    set_entry(serial / "system" / "controlDict", "endTime", END_TIME)
+    set_entry(serial / "system" / "controlDict", "writeInterval", END_TIME)
     set_entry(serial / "system" / "controlDict", "writePrecision", "14")
     tighten_solvers(serial)
     for tool in ("blockMesh", "topoSet", "setFields"):
@@ -48,7 +56,7 @@ def test_serial_and_parallel_runs_agree(ldna_case: Path, tmp_path: Path) -> None
     run(parallel, "reconstructPar -latestTime")
 
     end_serial, end_parallel = time_directories(serial)[-1], time_directories(parallel)[-1]
-    assert end_serial.name == end_parallel.name == "0.1"
+    assert end_serial.name == end_parallel.name == END_TIME
     for field in ("T", "U", "alpha.metal", "p_rgh"):
         a = read_internal_field(end_serial / field)
         b = read_internal_field(end_parallel / field)
@@ -57,4 +65,4 @@ def test_serial_and_parallel_runs_agree(ldna_case: Path, tmp_path: Path) -> None
         print(f"{field}: largest difference {difference:.2e} of its scale {scale:.6g}")
         assert difference < FIELD_TOLERANCE
     # The scene is not trivial: it has heated up
-    assert read_internal_field(end_serial / "T").max() > 1000
+    assert read_internal_field(end_serial / "T").max() > 900

@@ -11,7 +11,10 @@ independently of the solver, from the case's own dictionaries:
 - energy: the enthalpy added equals the mass added times h(T_droplet) within
   1 % (h from the 316L data, latent heat included);
 - momentum: without gravity and before anything reaches a wall, the metal's
-  momentum equals the integral of mass rate times droplet velocity within 2 %;
+  momentum equals the integral of mass rate times droplet velocity within 2 %
+  (without surface tension: the continuum-surface-force of OpenFOAM's
+  interfaceProperties puts a net force of up to 75 % of the transverse
+  momentum on droplets less than two cells across, measured here);
 - boundedness: alpha stays within [-1e-6, 1 + 1e-6], no field is NaN.
 """
 from __future__ import annotations
@@ -157,13 +160,16 @@ def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
     case = droplet_case
     (case / "constant" / "g").write_text(
         (case / "constant" / "g").read_text().replace("(0 0 -9.81)", "(0 0 0)"))
+    run(case, "foamDictionary -entry sigma -set 0 constant/thermophysicalProperties",
+        log_name="foamDictionary.sigma")
     # Two droplet periods: the first droplet travels about 8 mm, the source
     # is 13 mm above the floor
     t_end = 0.02
     set_entry(case / "system" / "controlDict", "endTime", str(t_end))
     set_entry(case / "system" / "controlDict", "writeInterval", str(t_end))
     run(case, "ldnaFoam")
-    run(case, "postProcess -func writeCellVolumes -latestTime", log_name="writeCellVolumes")
+    run(case, "postProcess -func 'writeCellVolumes' -latestTime", log_name="writeCellVolumes")
+    run(case, "postProcess -func 'writeCellCentres' -latestTime", log_name="writeCellCentres")
 
     last = time_directories(case)[-1]
     metal = Metal.from_case(case)
@@ -172,7 +178,7 @@ def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
     temperature = read_internal_field(last / "T")
     liquid = np.broadcast_to(read_internal_field(last / "liquidFraction"), alpha.shape)
     velocity = read_internal_field(last / "U")
-    rho_metal = np.array([metal.density(T, g) for T, g in zip(temperature, liquid)])
+    rho_metal = np.array([metal.mass_density(T, g) for T, g in zip(temperature, liquid)])
     metal_momentum = ((alpha * rho_metal * volume)[:, None] * velocity).sum(axis=0)
 
     expected = expected_momentum(case, t_end)
@@ -180,8 +186,9 @@ def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
     print(f"metal momentum {metal_momentum} kg m/s, injected {expected} kg m/s: "
           f"{100 * error:.2f} %")
     assert error < MOMENTUM_TOLERANCE
-    # Nothing reached a wall: no metal in the lowest 2 mm
-    centres_z = None
+    # Nothing reached a wall: the lowest metal is more than a cell above the floor
+    centres_z = read_internal_field(last / "Cz")
+    assert centres_z[alpha > 1e-3].min() > 1e-3
     low, high = alpha_bounds(case / "log.ldnaFoam")
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
 

@@ -20,9 +20,11 @@ TUTORIALS = sorted(p.parent for p in (PROJECT_DIR / "tutorials").glob("*/Allrun"
 def test_tutorial_runs(tutorial: Path, tmp_path: Path) -> None:
     case = Path(shutil.copytree(tutorial, tmp_path / tutorial.name))
     run(case, "./Allrun", log_name="Allrun")
-    for log in case.glob("log.*"):
+    for log in case.rglob("log.*"):
         assert "FOAM FATAL" not in log.read_text(errors="replace"), log.name
-    solver_log = case / "log.ldnaFoam"
+    solver_logs = list(case.rglob("log.ldnaFoam"))
+    assert len(solver_logs) == 1, "a tutorial runs ldnaFoam once"
+    solver_log = solver_logs[0]
     assert solver_log.read_text().rstrip().endswith("Finalising parallel run") or \
         "\nEnd\n" in solver_log.read_text()
     balances = read_balances(solver_log)

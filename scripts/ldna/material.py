@@ -66,6 +66,10 @@ class Metal:
     latent_heat: float
     rho_solid: Function1
     rho_liquid: Function1
+    #: "Boussinesq" or "variable" (metalGasMixture's densityModel)
+    density_model: str
+    #: Density of mass and inertia with the Boussinesq model [kg/m3]
+    reference_density: float
     cp_solid: Function1
     cp_liquid: Function1
 
@@ -77,7 +81,14 @@ class Metal:
         def entry(name: str) -> str:
             return dictionary_value(case, props, f"metal/{name}")
 
+        try:
+            model = entry("densityModel")
+        except KeyError:
+            model = "Boussinesq"
+        reference = float(entry("referenceDensity")) if model == "Boussinesq" else float("nan")
         return cls(
+            density_model=model,
+            reference_density=reference,
             solidus=float(entry("solidus")),
             liquidus=float(entry("liquidus")),
             latent_heat=float(entry("latentHeat")),
@@ -105,7 +116,13 @@ class Metal:
         """Sensible plus latent enthalpy at equilibrium [J/kg]."""
         return self.sensible_enthalpy(T) + self.liquid_fraction(T) * self.latent_heat
 
+    def mass_density(self, T: float, liquid_fraction: float) -> float:
+        """Density of mass and inertia: the reference (Boussinesq) or rho(T, gl)."""
+        if self.density_model == "Boussinesq":
+            return self.reference_density
+        return self.density(T, liquid_fraction)
+
     def density(self, T: float, liquid_fraction: float) -> float:
-        """Density blended with the liquid fraction, each phase on its own range."""
+        """rho(T, gl): the liquid fraction blends each phase's function on its range."""
         return ((1 - liquid_fraction) * self.rho_solid.value(min(T, self.solidus))
                 + liquid_fraction * self.rho_liquid.value(max(T, self.liquidus)))

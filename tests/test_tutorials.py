@@ -13,10 +13,23 @@ import pytest
 
 from ldna.foamcase import PROJECT_DIR, alpha_bounds, read_balances, run
 
-TUTORIALS = sorted(p.parent for p in (PROJECT_DIR / "tutorials").glob("*/Allrun"))
+#: Known failures, each with what was measured (strict: a fix makes the test
+#: fail until the entry is removed)
+KNOWN_FAILURES = {
+    "dropletImpact": "issue 3 open: with the pool present the metal fraction overshoots to "
+                     "1.14 in the second step of the first droplet pulse (t = 1.2e-4 s, before "
+                     "any droplet reaches the pool); without a pool it stays below 0.68",
+}
+
+TUTORIALS = [
+    pytest.param(path, id=path.name,
+                 marks=[pytest.mark.xfail(strict=True, reason=KNOWN_FAILURES[path.name])]
+                 if path.name in KNOWN_FAILURES else [])
+    for path in sorted(p.parent for p in (PROJECT_DIR / "tutorials").glob("*/Allrun"))
+]
 
 
-@pytest.mark.parametrize("tutorial", TUTORIALS, ids=[t.name for t in TUTORIALS])
+@pytest.mark.parametrize("tutorial", TUTORIALS)
 def test_tutorial_runs(tutorial: Path, tmp_path: Path) -> None:
     case = Path(shutil.copytree(tutorial, tmp_path / tutorial.name))
     run(case, "./Allrun", log_name="Allrun")

@@ -16,9 +16,9 @@ from ldna.foamcase import PROJECT_DIR, alpha_bounds, read_balances, run
 #: Known failures, each with what was measured (strict: a fix makes the test
 #: fail until the entry is removed)
 KNOWN_FAILURES = {
-    "dropletImpact": "issue 3 open: with the pool present the metal fraction overshoots to "
-                     "1.14 in the second step of the first droplet pulse (t = 1.2e-4 s, before "
-                     "any droplet reaches the pool); without a pool it stays below 0.68",
+    "dropletImpact": "issue 3 open: the metal fraction overshoots to 1 + 6.4e-6 (bound "
+                     "1 + 1e-6) from the second droplet pulse on (t = 0.010 s) in the pool "
+                     "scene; the droplet box without a pool stays within [-4e-8, 0.68]",
 }
 
 TUTORIALS = [

@@ -39,6 +39,8 @@ MOMENTUM_TOLERANCE = 0.02
 DEFAULT_DUTY_FRACTION = (math.pi - 2 * math.asin(0.8)) / (2 * math.pi)
 DUTY_TOLERANCE = 0.002
 ALPHA_BOUND = 1e-6
+#: dropletSource's default droplet temperature [K] (paper: measured 2100 K)
+DEFAULT_DROPLET_TEMPERATURE = 2100.0
 
 SOURCE = "constant/fvOptions"
 
@@ -105,8 +107,10 @@ def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
     metal = Metal.from_case(case)
     added_enthalpy = 0.0
     for wire in wires:
-        temperature = float(dictionary_value(case, SOURCE, f"wireDroplets/wires/{wire}/temperature")) \
-            if "temperature" in dictionary_value(case, SOURCE, f"wireDroplets/wires/{wire}") else 2100.0
+        try:
+            temperature = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/temperature")
+        except KeyError:
+            temperature = DEFAULT_DROPLET_TEMPERATURE
         added_enthalpy += logged_wire_values(log, wire, "added mass")[-1] * metal.enthalpy(temperature)
     enthalpy_change = end["enthalpy"] - start["enthalpy"]
     energy_error = abs(enthalpy_change - added_enthalpy) / added_enthalpy

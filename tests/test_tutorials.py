@@ -14,12 +14,8 @@ import pytest
 from ldna.foamcase import PROJECT_DIR, alpha_bounds, read_balances, run
 
 #: Known failures, each with what was measured (strict: a fix makes the test
-#: fail until the entry is removed)
-KNOWN_FAILURES = {
-    "dropletImpact": "issue 3 open: the metal fraction overshoots to 1 + 6.4e-6 (bound "
-                     "1 + 1e-6) from the second droplet pulse on (t = 0.010 s) in the pool "
-                     "scene; the droplet box without a pool stays within [-4e-8, 0.68]",
-}
+#: fail until the entry is removed); empty while every scene stays in bounds
+KNOWN_FAILURES: dict[str, str] = {}
 
 TUTORIALS = [
     pytest.param(path, id=path.name,

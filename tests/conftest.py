@@ -63,6 +63,15 @@ def energy_box_case(tmp_path: Path) -> Path:
 
 
 @pytest.fixture
+def laser_slab_case(tmp_path: Path) -> Path:
+    """The meshed box with a flat 316L slab under argon, for the laser tests (not yet run)."""
+    case = prepare_test_case("laserSlab", tmp_path, material_from_template=True)
+    run(case, "blockMesh")
+    run(case, "setFields")
+    return case
+
+
+@pytest.fixture
 def ldna_case(tmp_path: Path) -> Path:
     """A copy of the LDNA template at resolution level 0, ASCII output (not yet meshed)."""
     from ldna.foamdict import set_entry

@@ -1,0 +1,175 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "interfaceHeatLoss.H"
+#include "fvMatrices.H"
+#include "interfaceDelta.H"
+#include "fvmSup.H"
+#include "physicoChemicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(interfaceHeatLoss, 0);
+    addToRunTimeSelectionTable(option, interfaceHeatLoss, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fv::interfaceHeatLoss::readCoeffs()
+{
+    radiation_ = coeffs_.lookupOrDefault<bool>("radiation", true);
+    convection_ = coeffs_.lookupOrDefault<bool>("convection", true);
+
+    emissivity_ = radiation_ ? coeffs_.get<scalar>("emissivity") : 0;
+    if (emissivity_ < 0 || emissivity_ > 1)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "emissivity " << emissivity_ << " must be in [0, 1]"
+            << exit(FatalIOError);
+    }
+
+    heatTransferCoeff_ =
+        convection_ ? coeffs_.get<scalar>("heatTransferCoeff") : 0;
+    if (heatTransferCoeff_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "heatTransferCoeff " << heatTransferCoeff_ << " must be >= 0"
+            << exit(FatalIOError);
+    }
+
+    ambientTemperature_ = coeffs_.get<scalar>("ambientTemperature");
+    if (ambientTemperature_ <= 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "ambientTemperature " << ambientTemperature_ << " must be > 0"
+            << exit(FatalIOError);
+    }
+
+    alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
+    TName_ = coeffs_.lookupOrDefault<word>("T", "T");
+    log_ = coeffs_.lookupOrDefault<bool>("log", true);
+
+    fieldNames_.setSize(1, TName_);
+    applied_.setSize(1, false);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fv::interfaceHeatLoss::interfaceHeatLoss
+(
+    const word& name,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(name, modelType, dict, mesh),
+    radiation_(true),
+    emissivity_(0),
+    convection_(true),
+    heatTransferCoeff_(0),
+    ambientTemperature_(0),
+    log_(true),
+    loggedTimeIndex_(-1)
+{
+    readCoeffs();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fv::interfaceHeatLoss::addSup
+(
+    fvMatrix<scalar>& eqn,
+    const label fieldi
+)
+{
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+    const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
+    const scalarField delta(metalSurfaceDelta(alpha)().primitiveField());
+    const scalarField& Tc = T.primitiveField();
+
+    const scalar sigmaSB = constant::physicoChemical::sigma.value();
+    const scalar T0 = ambientTemperature_;
+    const scalar T04 = pow4(T0);
+
+    // Loss q(T) about the current iterate T*: q(T*) + q'(T*) (T - T*), the
+    // slope part implicit
+    const dimensionSet sourceDims(eqn.dimensions()/dimVolume);
+    DimensionedField<scalar, volMesh> explicitPart
+    (
+        IOobject(name_ + ":explicit", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedScalar(sourceDims, Zero)
+    );
+    DimensionedField<scalar, volMesh> slope
+    (
+        IOobject(name_ + ":slope", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedScalar(sourceDims/dimTemperature, Zero)
+    );
+
+    scalar radiated = 0;
+    scalar convected = 0;
+    const scalarField& V = mesh_.V();
+    forAll(Tc, celli)
+    {
+        const scalar Ts = Tc[celli];
+        const scalar qRad = emissivity_*sigmaSB*(pow4(Ts) - T04);
+        const scalar qConv = heatTransferCoeff_*(Ts - T0);
+        const scalar dq = 4*emissivity_*sigmaSB*pow3(Ts) + heatTransferCoeff_;
+
+        slope[celli] = delta[celli]*dq;
+        explicitPart[celli] = delta[celli]*(qRad + qConv - dq*Ts);
+
+        radiated += qRad*delta[celli]*V[celli];
+        convected += qConv*delta[celli]*V[celli];
+    }
+
+    eqn -= explicitPart;
+    eqn -= fvm::Sp(slope, T);
+
+    if (log_ && loggedTimeIndex_ != mesh_.time().timeIndex())
+    {
+        loggedTimeIndex_ = mesh_.time().timeIndex();
+        Info<< type() << ' ' << name_ << ": radiated = "
+            << returnReduce(radiated, sumOp<scalar>())
+            << " W, convected = " << returnReduce(convected, sumOp<scalar>())
+            << " W" << endl;
+    }
+}
+
+
+void Foam::fv::interfaceHeatLoss::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<scalar>& eqn,
+    const label fieldi
+)
+{
+    addSup(eqn, fieldi);
+}
+
+
+bool Foam::fv::interfaceHeatLoss::read(const dictionary& dict)
+{
+    if (option::read(dict))
+    {
+        readCoeffs();
+        return true;
+    }
+    return false;
+}
+
+
+// ************************************************************************* //

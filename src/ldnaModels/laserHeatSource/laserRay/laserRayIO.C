@@ -1,0 +1,115 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "laserRay.H"
+#include "IOstreams.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+Foam::string Foam::laserRay::propertyList_ = Foam::laserRay::propertyList();
+
+const std::size_t Foam::laserRay::sizeofFields_
+(
+    sizeof(laserRay) - sizeof(particle)
+);
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::laserRay::laserRay
+(
+    const polyMesh& mesh,
+    Istream& is,
+    bool readFields,
+    bool newFormat
+)
+:
+    particle(mesh, is, readFields, newFormat),
+    p0_(Zero),
+    p1_(Zero),
+    power_(0),
+    opticalDepth_(0),
+    nEvents_(0)
+{
+    if (readFields)
+    {
+        if (is.format() == IOstream::ASCII)
+        {
+            is >> p0_ >> p1_ >> power_ >> opticalDepth_ >> nEvents_;
+        }
+        else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
+        {
+            is.beginRawRead();
+            readRawScalar(is, p0_.data(), vector::nComponents);
+            readRawScalar(is, p1_.data(), vector::nComponents);
+            readRawScalar(is, &power_);
+            readRawScalar(is, &opticalDepth_);
+            readRawLabel(is, &nEvents_);
+            is.endRawRead();
+        }
+        else
+        {
+            is.read(reinterpret_cast<char*>(&p0_), sizeofFields_);
+        }
+    }
+
+    is.check(FUNCTION_NAME);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::laserRay::writeProperties
+(
+    Ostream& os,
+    const wordRes& filters,
+    const word& delim,
+    const bool namesOnly
+) const
+{
+    particle::writeProperties(os, filters, delim, namesOnly);
+
+    #undef  writeProp
+    #define writeProp(Name, Value)                                            \
+        particle::writeProperty(os, Name, Value, namesOnly, delim, filters)
+
+    writeProp("p0", p0_);
+    writeProp("p1", p1_);
+    writeProp("power", power_);
+    writeProp("opticalDepth", opticalDepth_);
+    writeProp("nEvents", nEvents_);
+
+    #undef writeProp
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const laserRay& p)
+{
+    if (os.format() == IOstream::ASCII)
+    {
+        os  << static_cast<const particle&>(p)
+            << token::SPACE << p.p0_
+            << token::SPACE << p.p1_
+            << token::SPACE << p.power_
+            << token::SPACE << p.opticalDepth_
+            << token::SPACE << p.nEvents_;
+    }
+    else
+    {
+        os  << static_cast<const particle&>(p);
+        os.write
+        (
+            reinterpret_cast<const char*>(&p.p0_),
+            laserRay::sizeofFields_
+        );
+    }
+
+    os.check(FUNCTION_NAME);
+    return os;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,21 @@
+/*--------------------------------*- C++ -*----------------------------------*\
+  ldnaFoam test case: laser on a flat metal slab
+\*---------------------------------------------------------------------------*/
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       volScalarField;
+    location    "0";
+    object      alpha.metal;
+}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+dimensions      [0 0 0 0 0 0 0];
+internalField   uniform 0;
+boundaryField
+{
+    walls { type zeroGradient; }
+}
+
+// ************************************************************************* //

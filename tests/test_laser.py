@@ -250,3 +250,39 @@ surfaceLosses
     expected = emissivity * stefan_boltzmann * (temperature**4 - ambient**4) * SURFACE_AREA
     print(f"radiated {radiated:.5f} W, eps sigma (T^4 - T0^4) A = {expected:.5f} W")
     assert abs(radiated - expected) / expected < RADIATION_TOLERANCE
+
+
+# (description, fvOptions entries with one bad value, expected texts)
+BAD_INPUTS = [
+    ("unknown absorption model", laser_entry("rayTracing"), ["absorptionModel", "rayTracing"]),
+    ("zero beam radius", laser_entry("beerLambert").replace(f"beamRadius      {BEAM_RADIUS}",
+                                                            "beamRadius      0"),
+     ["beamRadius", "> 0"]),
+    ("absorptivity above 1", laser_entry("gaussianSurface").replace(
+        f"absorptivity    constant {ABSORPTIVITY}", "absorptivity    constant 1.5"),
+     ["absorptivity", "[0, 1]"]),
+    ("transmittance of 1", laser_entry("beerLambert", coeffs="transmittance 1;"),
+     ["transmittance", "(0, 1)"]),
+    ("laser angle of 90 degrees", laser_entry("monteCarlo", extra="angle 90;"),
+     ["angle", "(-90, 90)"]),
+    ("negative emissivity", """
+surfaceLosses
+{
+    type interfaceHeatLoss; emissivity -0.1; heatTransferCoeff 10; ambientTemperature 300;
+}
+""", ["emissivity", "[0, 1]"]),
+]
+
+
+@pytest.mark.parametrize("description,entries,expected", BAD_INPUTS,
+                         ids=[b[0].replace(" ", "_") for b in BAD_INPUTS])
+def test_bad_laser_input(laser_slab_case: Path, description: str, entries: str,
+                         expected: list[str]) -> None:
+    case = laser_slab_case
+    write_fv_options(case, entries)
+    result = run(case, "ldnaFoam", check=False)
+    error = result.output
+    assert result.returncode != 0, description
+    assert "FOAM FATAL IO ERROR" in error, description
+    for text in expected:
+        assert text in error, f"{description}: '{text}' missing"

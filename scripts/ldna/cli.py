@@ -5,12 +5,18 @@ import argparse
 import sys
 from pathlib import Path
 
-from . import meshing
+from . import benchmark, meshing
 
 
 def _mesh_levels(args: argparse.Namespace) -> int:
     for path in meshing.write_mesh_levels(Path(args.case)):
         print(path)
+    return 0
+
+
+def _bench_laser(args: argparse.Namespace) -> int:
+    costs = benchmark.laser_cost(level=args.level, steps=args.steps)
+    benchmark.print_costs(costs, args.level)
     return 0
 
 
@@ -25,6 +31,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     mesh_levels.add_argument("case", nargs="?", default=".", help="case directory")
     mesh_levels.set_defaults(func=_mesh_levels)
+
+    bench_laser = commands.add_parser(
+        "bench-laser",
+        help="time per step of the LDNA template without a laser and with each laser model",
+    )
+    bench_laser.add_argument("--level", type=int, default=1, help="mesh level (0..3)")
+    bench_laser.add_argument("--steps", type=int, default=20, help="fixed time steps per run")
+    bench_laser.set_defaults(func=_bench_laser)
     return parser
 
 

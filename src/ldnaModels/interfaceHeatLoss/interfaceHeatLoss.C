@@ -79,7 +79,8 @@ Foam::fv::interfaceHeatLoss::interfaceHeatLoss
     heatTransferCoeff_(0),
     ambientTemperature_(0),
     log_(true),
-    loggedTimeIndex_(-1)
+    loggedTimeIndex_(-1),
+    deltaEventNo_(-1)
 {
     readCoeffs();
 }
@@ -96,7 +97,14 @@ void Foam::fv::interfaceHeatLoss::addSup
     const volScalarField& alpha =
         mesh_.lookupObject<volScalarField>(alphaName_);
     const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
-    const scalarField delta(metalSurfaceDelta(alpha)().primitiveField());
+    if (alpha.eventNo() != deltaEventNo_ || delta_.size() != mesh_.nCells())
+    {
+        // alpha changes once per outer corrector, not between the energy
+        // iterations that call this
+        delta_ = metalSurfaceDelta(alpha)().primitiveField();
+        deltaEventNo_ = alpha.eventNo();
+    }
+    const scalarField& delta = delta_;
     const scalarField& Tc = T.primitiveField();
 
     const scalar sigmaSB = constant::physicoChemical::sigma.value();

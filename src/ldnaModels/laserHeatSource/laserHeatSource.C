@@ -50,7 +50,7 @@ const Foam::scalar defaultOscillationFrequency = 10;
 // rays by normalisation)
 const Foam::scalar gaussianExtent = 2;
 
-// A deterministic ray is stopped below this share of its initial power
+// A ray is stopped below this share of its initial power
 const Foam::scalar rayPowerCutoff = 1e-9;
 
 } // End anonymous namespace
@@ -196,12 +196,12 @@ void Foam::fv::laserHeatSource::readCoeffs()
     (
         mcDict.lookupOrDefault<word>("scattering", "specular")
     );
-    if (nRaysAcross_ < 2 || nRays_ < 1 || maxEvents_ < 1)
+    if (nRaysAcross_ < 2 || nRays_ < 1 || maxEvents_ < 0)
     {
         FatalIOErrorInFunction(coeffs_)
             << "nRaysAcross " << nRaysAcross_ << " must be >= 2, nRays "
             << nRays_ << " >= 1 and maxScatteringEvents " << maxEvents_
-            << " >= 1" << exit(FatalIOError);
+            << " >= 0" << exit(FatalIOError);
     }
     if (scattering != "specular" && scattering != "isotropic")
     {

@@ -70,6 +70,7 @@ Foam::laserRay::laserRay
     particle(mesh, position, celli),
     p0_(position),
     p1_(position + segmentLength*direction),
+    surfaceNormal_(Zero),
     power_(power),
     opticalDepth_(opticalDepth),
     nEvents_(0)
@@ -112,7 +113,13 @@ void Foam::laserRay::interact(trackingData& td, const label celli)
     vector n = td.normal[celli];
     if (magSqr(n) < 0.5)
     {
-        // No interface direction in this cell: as if at normal incidence
+        // Below the interface cells: the surface the ray came in through
+        n = surfaceNormal_;
+    }
+    if (magSqr(n) < 0.5)
+    {
+        // No interface crossed (the ray started in the metal): as if at
+        // normal incidence
         n = -d;
     }
 
@@ -121,15 +128,11 @@ void Foam::laserRay::interact(trackingData& td, const label celli)
       ? fresnelAbsorptivity(mag(d & n), td.nRefraction, td.kExtinction)
       : td.absorptivity[celli];
 
-    if (td.rndGen.sample01<scalar>() < a)
-    {
-        td.absorbed[celli] += power_;
-        power_ = 0;
-        td.keepParticle = false;
-        return;
-    }
+    const scalar absorbed = a*power_;
+    td.absorbed[celli] += absorbed;
+    power_ -= absorbed;
 
-    if (++nEvents_ > td.maxEvents)
+    if (power_ < td.powerCutoff || ++nEvents_ > td.maxEvents)
     {
         td.stopped += power_;
         power_ = 0;
@@ -176,6 +179,10 @@ bool Foam::laserRay::move
     while (td.keepParticle && !td.switchProcessor && stepFraction() < 1)
     {
         const label celli = cell();
+        if (magSqr(td.normal[celli]) > 0.5)
+        {
+            surfaceNormal_ = td.normal[celli];
+        }
         const scalar f = 1 - stepFraction();
         const vector s = f*(p1_ - p0_) - deviationFromMeshCentre();
         const scalar sMag = mag(s);

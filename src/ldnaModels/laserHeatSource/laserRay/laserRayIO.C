@@ -28,6 +28,7 @@ Foam::laserRay::laserRay
     particle(mesh, is, readFields, newFormat),
     p0_(Zero),
     p1_(Zero),
+    surfaceNormal_(Zero),
     power_(0),
     opticalDepth_(0),
     nEvents_(0)
@@ -36,13 +37,14 @@ Foam::laserRay::laserRay
     {
         if (is.format() == IOstream::ASCII)
         {
-            is >> p0_ >> p1_ >> power_ >> opticalDepth_ >> nEvents_;
+            is >> p0_ >> p1_ >> surfaceNormal_ >> power_ >> opticalDepth_ >> nEvents_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
             is.beginRawRead();
             readRawScalar(is, p0_.data(), vector::nComponents);
             readRawScalar(is, p1_.data(), vector::nComponents);
+            readRawScalar(is, surfaceNormal_.data(), vector::nComponents);
             readRawScalar(is, &power_);
             readRawScalar(is, &opticalDepth_);
             readRawLabel(is, &nEvents_);
@@ -76,6 +78,7 @@ void Foam::laserRay::writeProperties
 
     writeProp("p0", p0_);
     writeProp("p1", p1_);
+    writeProp("surfaceNormal", surfaceNormal_);
     writeProp("power", power_);
     writeProp("opticalDepth", opticalDepth_);
     writeProp("nEvents", nEvents_);
@@ -93,6 +96,7 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const laserRay& p)
         os  << static_cast<const particle&>(p)
             << token::SPACE << p.p0_
             << token::SPACE << p.p1_
+            << token::SPACE << p.surfaceNormal_
             << token::SPACE << p.power_
             << token::SPACE << p.opticalDepth_
             << token::SPACE << p.nEvents_;

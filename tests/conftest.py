@@ -72,6 +72,24 @@ def laser_slab_case(tmp_path: Path) -> Path:
 
 
 @pytest.fixture
+def marangoni_layer_case(tmp_path: Path) -> Path:
+    """The meshed 2D liquid layer between a hot and a cold wall, no gravity (not yet run)."""
+    case = prepare_test_case("marangoniLayer", tmp_path, material_from_template=False)
+    run(case, "blockMesh")
+    run(case, "setFields")
+    return case
+
+
+@pytest.fixture
+def static_droplet_case(tmp_path: Path) -> Path:
+    """The meshed 2D box with a liquid cylinder of exact cut-cell fractions (not yet run)."""
+    case = prepare_test_case("staticDroplet", tmp_path, material_from_template=False)
+    run(case, "blockMesh")
+    run(case, "setAlphaField")
+    return case
+
+
+@pytest.fixture
 def ldna_case(tmp_path: Path) -> Path:
     """A copy of the LDNA template at resolution level 0, ASCII output (not yet meshed)."""
     from ldna.foamdict import set_entry

@@ -14,6 +14,15 @@ namespace Foam
 
 const Foam::scalar Foam::metalGasMixture::propertyCheckTmin = 200;
 const Foam::scalar Foam::metalGasMixture::propertyCheckTmax = 3200;
+
+namespace
+{
+
+// A cell belongs to the interface band where the metal fraction changes by
+// more than this across it
+const Foam::scalar interfaceBandGradient = 1e-3;
+
+}
 const Foam::scalar Foam::metalGasMixture::Tref = 298.15;
 
 
@@ -59,6 +68,14 @@ void Foam::metalGasMixture::readCoeffs()
         FatalIOErrorInFunction(*this)
             << "Entry 'pMin' must be > 0 Pa, not " << pMin_.value()
             << exit(FatalIOError);
+    }
+
+    curvatureSmoothing_ = lookupOrDefault<label>("curvatureSmoothing", 0);
+    if (curvatureSmoothing_ < 0)
+    {
+        FatalIOErrorInFunction(*this)
+            << "Entry 'curvatureSmoothing' must be >= 0, not "
+            << curvatureSmoothing_ << exit(FatalIOError);
     }
 
     const dictionary& metal = subDict(phase1Name());
@@ -344,12 +361,31 @@ Foam::metalGasMixture::metalGasMixture
     Boussinesq_(true),
     referenceDensity_(0),
     sigmaModel_(surfaceTensionModel::New(*this, U.mesh())),
+    curvatureSmoothing_(0),
+    curvature_
+    (
+        IOobject
+        (
+            "curvature",
+            U.time().timeName(),
+            U.mesh()
+        ),
+        U.mesh(),
+        dimensionedScalar(dimless/dimLength, Zero)
+    ),
+    curvaturef_
+    (
+        IOobject("curvaturef", U.time().timeName(), U.mesh()),
+        U.mesh(),
+        dimensionedScalar(dimless/dimLength, Zero)
+    ),
     Tsolidus_(0),
     Tliquidus_(0),
     latentHeat_(0),
     Rgas_(0)
 {
     readCoeffs();
+    correctCurvature();
 
     if (min(T_).value() <= 0)
     {
@@ -543,9 +579,71 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
 }
 
 
+void Foam::metalGasMixture::correctCurvature()
+{
+    if (curvatureSmoothing_ == 0)
+    {
+        // interfaceProperties' curvature
+        return;
+    }
+
+    const fvMesh& mesh = alpha1().mesh();
+
+    volScalarField alphaSmooth("alphaSmooth", alpha1());
+    for (label pass = 0; pass < curvatureSmoothing_; ++pass)
+    {
+        alphaSmooth = fvc::average(fvc::interpolate(alphaSmooth));
+    }
+
+    // Unit normals in the cells of the (smoothed) interface band only: the
+    // direction of the round-off gradients of the bulk phases is noise
+    const volVectorField gradAlpha(fvc::grad(alphaSmooth, "nHat"));
+    volVectorField nHat
+    (
+        IOobject("nHat", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimless, Zero)
+    );
+    forAll(nHat, celli)
+    {
+        const scalar magGrad = mag(gradAlpha[celli]);
+        if (magGrad*cbrt(mesh.V()[celli]) > interfaceBandGradient)
+        {
+            nHat[celli] = gradAlpha[celli]/magGrad;
+        }
+    }
+
+    // nHat stays zero on boundary faces: no capillary flux through walls
+    // and open patches (the 90 degree contact angle of a zeroGradient alpha)
+    curvature_ = -fvc::div(fvc::interpolate(nHat) & mesh.Sf());
+
+    // Face curvature: the cell curvatures weighted by |grad alpha|, so that
+    // a face of the sharp interface takes the curvature of the cells the
+    // interface passes through, not that of the band's edge cells, where
+    // the normals fade out and -div(nHat) is an artefact of the fading
+    const volScalarField weight(mag(gradAlpha));
+    curvaturef_ =
+        fvc::interpolate(weight*curvature_)
+       /(fvc::interpolate(weight) + dimensionedScalar("small", weight.dimensions(), VSMALL));
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::metalGasMixture::surfaceTensionForce() const
+{
+    if (curvatureSmoothing_ == 0)
+    {
+        return interfaceProperties::surfaceTensionForce();
+    }
+
+    return fvc::interpolate(sigma())*curvaturef_*fvc::snGrad(alpha1());
+}
+
+
 void Foam::metalGasMixture::correct()
 {
     interfaceProperties::correct();
+    correctCurvature();
 }
 
 

@@ -1,0 +1,98 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "temperatureSurfaceTension.H"
+#include "volFields.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::surfaceTensionModels::temperatureSurfaceTension::temperatureSurfaceTension
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    surfaceTensionModel(mesh),
+    TName_(dict.lookupOrDefault<word>("T", "T"))
+{}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::surfaceTensionModels::temperatureSurfaceTension::readTName
+(
+    const dictionary& sigmaDict
+)
+{
+    TName_ = sigmaDict.lookupOrDefault<word>("T", "T");
+}
+
+
+void Foam::surfaceTensionModels::temperatureSurfaceTension::checkPositive
+(
+    const dictionary& sigmaDict,
+    const scalar Tmin,
+    const scalar Tmax
+) const
+{
+    const label nSamples = 200;
+    for (label i = 0; i <= nSamples; ++i)
+    {
+        const scalar T = Tmin + (Tmax - Tmin)*i/nSamples;
+        const scalar s = sigma(T);
+        if (!(s > 0))
+        {
+            FatalIOErrorInFunction(sigmaDict)
+                << "The surface tension " << s << " N/m at T = " << T
+                << " K must be > 0 on [" << Tmin << ", " << Tmax
+                << "] K: check the coefficients of sigma"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::volScalarField>
+Foam::surfaceTensionModels::temperatureSurfaceTension::sigma() const
+{
+    auto tsigma = tmp<volScalarField>::New
+    (
+        IOobject
+        (
+            "sigma",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimSigma
+    );
+    volScalarField& sigmaField = tsigma.ref();
+
+    const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
+
+    forAll(T, celli)
+    {
+        sigmaField[celli] = sigma(T[celli]);
+    }
+
+    volScalarField::Boundary& sigmaBf = sigmaField.boundaryFieldRef();
+    forAll(sigmaBf, patchi)
+    {
+        const scalarField& Tp = T.boundaryField()[patchi];
+        forAll(Tp, facei)
+        {
+            sigmaBf[patchi][facei] = sigma(Tp[facei]);
+        }
+    }
+
+    return tsigma;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,294 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "evaporation.H"
+#include "metalGasMixture.H"
+#include "interfaceDelta.H"
+#include "fvMatrices.H"
+#include "physicoChemicalConstants.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(evaporation, 0);
+    addToRunTimeSelectionTable(option, evaporation, dictionary);
+}
+}
+
+namespace
+{
+
+// Standard atmosphere [Pa]: the boiling point is quoted at it
+const Foam::scalar standardPressure = 101325;
+
+// Recoil pressure over saturation pressure for evaporation into vacuum
+// (Anisimov, Sov. Phys. JETP 27 (1968) 182)
+const Foam::scalar recoilFactor = 0.54;
+
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fv::evaporation::readCoeffs()
+{
+    const word model(coeffs_.get<word>("model"));
+    if (model == "paper")
+    {
+        model_ = evaporationModel::paper;
+    }
+    else if (model == "hertzKnudsen")
+    {
+        model_ = evaporationModel::hertzKnudsen;
+    }
+    else
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "model " << model << " must be paper or hertzKnudsen"
+            << exit(FatalIOError);
+    }
+
+    boilingTemperature_ = coeffs_.get<scalar>("boilingTemperature");
+    latentHeat_ = coeffs_.get<scalar>("latentHeat");
+    if (boilingTemperature_ <= 0 || latentHeat_ <= 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "boilingTemperature " << boilingTemperature_
+            << " and latentHeat " << latentHeat_ << " must be > 0"
+            << exit(FatalIOError);
+    }
+
+    const bool hk = (model_ == evaporationModel::hertzKnudsen);
+    molarMass_ = hk ? coeffs_.get<scalar>("molarMass") : 0;
+    boilingPressure_ =
+        coeffs_.lookupOrDefault<scalar>("boilingPressure", standardPressure);
+    recondensation_ = coeffs_.lookupOrDefault<scalar>("recondensation", 0);
+    recoilPressure_ = coeffs_.lookupOrDefault<bool>("recoilPressure", false);
+    if (hk && (molarMass_ <= 0 || boilingPressure_ <= 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "molarMass " << molarMass_ << " and boilingPressure "
+            << boilingPressure_ << " must be > 0" << exit(FatalIOError);
+    }
+    if (recondensation_ < 0 || recondensation_ >= 1)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "recondensation " << recondensation_ << " must be in [0, 1)"
+            << exit(FatalIOError);
+    }
+    if (recoilPressure_ && !hk)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "recoilPressure needs model hertzKnudsen (the paper model has "
+            << "no saturation pressure)" << exit(FatalIOError);
+    }
+
+    alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
+    TName_ = coeffs_.lookupOrDefault<word>("T", "T");
+    UName_ = coeffs_.lookupOrDefault<word>("U", "U");
+    log_ = coeffs_.lookupOrDefault<bool>("log", true);
+
+    fieldNames_.setSize(recoilPressure_ ? 3 : 2);
+    fieldNames_[0] = alphaName_;
+    fieldNames_[1] = TName_;
+    if (recoilPressure_)
+    {
+        fieldNames_[2] = UName_;
+    }
+    applied_.setSize(fieldNames_.size(), false);
+
+    updatedTimeIndex_ = -1;
+}
+
+
+Foam::scalar Foam::fv::evaporation::saturationPressure(const scalar T) const
+{
+    const scalar R = constant::physicoChemical::R.value();
+    return
+        boilingPressure_
+       *exp(latentHeat_*molarMass_/R*(1/boilingTemperature_ - 1/T));
+}
+
+
+void Foam::fv::evaporation::update()
+{
+    if (updatedTimeIndex_ == mesh_.time().timeIndex())
+    {
+        return;
+    }
+    updatedTimeIndex_ = mesh_.time().timeIndex();
+
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+    const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
+    const metalGasMixture& mixture =
+        mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
+    const scalarField& rho1 = mixture.rho1().primitiveField();
+    const scalar rDeltaT = 1/mesh_.time().deltaTValue();
+
+    massRate_.setSize(mesh_.nCells());
+    massRate_ = 0;
+    recoilForce_.setSize(mesh_.nCells());
+    recoilForce_ = Zero;
+
+    if (model_ == evaporationModel::paper)
+    {
+        const volScalarField Cp1(mixture.Cp1());
+        forAll(massRate_, celli)
+        {
+            const scalar superheat = T[celli] - boilingTemperature_;
+            if (superheat > 0 && alpha[celli] > 0)
+            {
+                const scalar we =
+                    min(Cp1[celli]*superheat/latentHeat_, scalar(1));
+                massRate_[celli] = we*alpha[celli]*rho1[celli]*rDeltaT;
+            }
+        }
+    }
+    else
+    {
+        const scalar R = constant::physicoChemical::R.value();
+        const volScalarField delta(metalSurfaceDelta(alpha));
+        const volVectorField deltaNormal(metalSurfaceDeltaNormal(alpha));
+        forAll(massRate_, celli)
+        {
+            if (delta[celli] > 0)
+            {
+                const scalar Tc = T[celli];
+                const scalar pSat = saturationPressure(Tc);
+                const scalar flux =
+                    (1 - recondensation_)*pSat
+                   *sqrt(molarMass_/(constant::mathematical::twoPi*R*Tc));
+
+                // A cell cannot lose more metal than it holds
+                massRate_[celli] = min
+                (
+                    flux*delta[celli],
+                    max(alpha[celli], scalar(0))*rho1[celli]*rDeltaT
+                );
+
+                if (recoilPressure_)
+                {
+                    // Into the metal: along grad(alpha)
+                    recoilForce_[celli] =
+                        recoilFactor*pSat*deltaNormal[celli];
+                }
+            }
+        }
+    }
+
+    const scalar massRate = gSum(massRate_*mesh_.V());
+    evaporatedMass_ += massRate*mesh_.time().deltaTValue();
+
+    if (log_)
+    {
+        Info<< type() << ' ' << name_ << ": mass rate = " << massRate
+            << " kg/s, evaporated mass = " << evaporatedMass_
+            << " kg, heat sink = " << massRate*latentHeat_ << " W";
+        if (recoilPressure_)
+        {
+            Info<< ", recoil force = " << gSum(recoilForce_*mesh_.V())
+                << " N";
+        }
+        Info<< endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fv::evaporation::evaporation
+(
+    const word& name,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(name, modelType, dict, mesh),
+    model_(evaporationModel::paper),
+    boilingTemperature_(0),
+    latentHeat_(0),
+    molarMass_(0),
+    boilingPressure_(standardPressure),
+    recondensation_(0),
+    recoilPressure_(false),
+    log_(true),
+    updatedTimeIndex_(-1),
+    evaporatedMass_(0)
+{
+    readCoeffs();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fv::evaporation::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<scalar>& eqn,
+    const label fieldi
+)
+{
+    update();
+
+    DimensionedField<scalar, volMesh> S
+    (
+        IOobject(name_ + ":sink", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedScalar(eqn.dimensions()/dimVolume, Zero)
+    );
+
+    if (fieldi == 0)
+    {
+        // Metal mass [kg/m3/s]
+        S.field() = massRate_;
+    }
+    else if (fieldi == 1)
+    {
+        // Latent heat [W/m3]
+        S.field() = massRate_*latentHeat_;
+    }
+
+    eqn -= S;
+}
+
+
+void Foam::fv::evaporation::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    update();
+
+    DimensionedField<vector, volMesh> F
+    (
+        IOobject(name_ + ":recoil", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedVector(eqn.dimensions()/dimVolume, Zero)
+    );
+    F.field() = recoilForce_;
+    eqn += F;
+}
+
+
+bool Foam::fv::evaporation::read(const dictionary& dict)
+{
+    if (option::read(dict))
+    {
+        readCoeffs();
+        return true;
+    }
+    return false;
+}
+
+
+// ************************************************************************* //

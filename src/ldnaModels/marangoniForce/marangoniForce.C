@@ -1,0 +1,160 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "marangoniForce.H"
+#include "metalGasMixture.H"
+#include "interfaceDelta.H"
+#include "fvMatrices.H"
+#include "fvcGrad.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(marangoniForce, 0);
+    addToRunTimeSelectionTable(option, marangoniForce, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fv::marangoniForce::readCoeffs()
+{
+    alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
+    liquidFractionName_ =
+        coeffs_.lookupOrDefault<word>("liquidFraction", "liquidFraction");
+    UName_ = coeffs_.lookupOrDefault<word>("U", "U");
+    mixtureName_ =
+        coeffs_.lookupOrDefault<word>("mixture", "thermophysicalProperties");
+    log_ = coeffs_.lookupOrDefault<bool>("log", true);
+
+    fieldNames_.setSize(1, UName_);
+    applied_.setSize(1, false);
+}
+
+
+Foam::tmp<Foam::volVectorField::Internal>
+Foam::fv::marangoniForce::force() const
+{
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+    const volScalarField& liquidFraction =
+        mesh_.lookupObject<volScalarField>(liquidFractionName_);
+    const metalGasMixture& mixture =
+        mesh_.lookupObject<metalGasMixture>(mixtureName_);
+
+    const volVectorField gradSigma(fvc::grad(mixture.sigma()));
+    const volVectorField gradAlpha(fvc::grad(alpha));
+    const volScalarField delta(metalSurfaceDelta(alpha));
+
+    tmp<volVectorField::Internal> tf
+    (
+        new volVectorField::Internal
+        (
+            IOobject(name_ + ":force", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedVector(dimForce/dimVolume, Zero)
+        )
+    );
+    vectorField& f = tf.ref().field();
+
+    forAll(f, celli)
+    {
+        const scalar magGradAlpha = mag(gradAlpha[celli]);
+        if (delta[celli] > 0 && magGradAlpha > VSMALL)
+        {
+            const vector n = gradAlpha[celli]/magGradAlpha;
+            const vector tangentialGradSigma =
+                gradSigma[celli] - (n & gradSigma[celli])*n;
+            const scalar gl = min(max(liquidFraction[celli], scalar(0)), 1);
+
+            f[celli] = gl*delta[celli]*tangentialGradSigma;
+        }
+    }
+
+    if (log_ && loggedTimeIndex_ != mesh_.time().timeIndex())
+    {
+        // The tangential stress integrated over the surface [N] and the
+        // largest stress [N/m2]
+        const scalarField& V = mesh_.V();
+        scalar maxStress = 0;
+        forAll(f, celli)
+        {
+            if (delta[celli] > 0)
+            {
+                maxStress = max(maxStress, mag(f[celli])/delta[celli]);
+            }
+        }
+        Info<< type() << ' ' << name_ << ": total force = "
+            << gSum(f*V) << " N, max tangential stress = "
+            << returnReduce(maxStress, maxOp<scalar>()) << " N/m2" << endl;
+    }
+
+    return tf;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fv::marangoniForce::marangoniForce
+(
+    const word& name,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(name, modelType, dict, mesh),
+    log_(true),
+    loggedTimeIndex_(-1)
+{
+    readCoeffs();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fv::marangoniForce::addSup
+(
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    const bool logNow =
+        log_ && loggedTimeIndex_ != mesh_.time().timeIndex();
+    eqn += force();
+    if (logNow)
+    {
+        loggedTimeIndex_ = mesh_.time().timeIndex();
+    }
+}
+
+
+void Foam::fv::marangoniForce::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    addSup(eqn, fieldi);
+}
+
+
+bool Foam::fv::marangoniForce::read(const dictionary& dict)
+{
+    if (option::read(dict))
+    {
+        readCoeffs();
+        return true;
+    }
+    return false;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,105 @@
+"""Surface tension: the Laplace pressure of a static drop, and Marangoni flow.
+
+Both cases are 2D (one cell deep, empty front and back) and have no
+gravity.  The static drop checks the capillary normal force and its balance
+with the pressure; the liquid layer checks the tangential Marangoni stress
+against the return-flow solution of a layer under a uniform surface-tension
+gradient.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ldna.foamcase import dictionary_scalar, read_internal_field, run, time_directories
+
+#: Allowed errors (issue 5)
+LAPLACE_TOLERANCE = 0.02
+SPURIOUS_VELOCITY_SCALE = 1e-3     # times sigma/mu
+SURFACE_VELOCITY_TOLERANCE = 0.05
+
+PROPERTIES = "constant/thermophysicalProperties"
+
+
+def cell_centres_2d(case: Path) -> tuple[np.ndarray, np.ndarray, float]:
+    """x and z of the cell centres (OpenFOAM's writeCellCentres) and the cell size."""
+    run(case, "postProcess -func writeCellCentres -time 0")
+    centres = read_internal_field(case / "0" / "C")
+    x, z = centres[:, 0], centres[:, 2]
+    h = float(np.diff(np.unique(np.round(x, 12))).min())
+    return x, z, h
+
+
+def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None:
+    """A liquid cylinder at rest: p_in - p_out = sigma/R, and hardly any flow."""
+    case = static_droplet_case
+    run(case, "ldnaFoam")
+
+    last = time_directories(case)[-1]
+    p = read_internal_field(last / "p_rgh")
+    velocity = read_internal_field(last / "U")
+    x, z, h = cell_centres_2d(case)
+    radius = dictionary_scalar(case, "system/setAlphaFieldDict", "radius")
+    origin = run(case, "foamDictionary -entry origin -value system/setAlphaFieldDict").output
+    cx, _, cz = (float(v) for v in origin.strip().strip("()").split())
+    r = np.hypot(x - cx, z - cz)
+
+    # Pressure plateaus three cells away from the interface on either side
+    jump = p[r < radius - 3 * h].mean() - p[r > radius + 3 * h].mean()
+    sigma = dictionary_scalar(case, PROPERTIES, "sigma")
+    laplace = sigma / radius
+    mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
+    largest_speed = np.linalg.norm(velocity, axis=1).max()
+    print(f"pressure jump {jump:.2f} Pa, sigma/R = {laplace:.2f} Pa "
+          f"({100 * (jump / laplace - 1):+.2f} %); largest speed {largest_speed:.4f} m/s, "
+          f"limit {SPURIOUS_VELOCITY_SCALE * sigma / mu:.4f} m/s")
+    assert abs(jump - laplace) / laplace < LAPLACE_TOLERANCE
+    assert largest_speed < SPURIOUS_VELOCITY_SCALE * sigma / mu
+
+
+@pytest.mark.parametrize("d_sigma_d_t", [-4.3e-4, 4.3e-4])
+def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -> None:
+    """Liquid layer of depth d under tau = dsigma/dT dT/dx: surface speed tau d/(4 mu).
+
+    The hot wall is at x = 0: with d sigma/dT < 0 the surface flows to the
+    cold wall (+x) and returns along the bottom; with d sigma/dT > 0 both
+    reverse.  The velocity of the liquid column at mid-length is fitted
+    with the return-flow profile u = a z + b z^2 (no slip at z = 0) and
+    evaluated at the surface.
+    """
+    case = marangoni_layer_case
+    run(case, f"foamDictionary -entry sigma/dSigmadT -set {d_sigma_d_t} {PROPERTIES}")
+    run(case, "ldnaFoam")
+
+    last = time_directories(case)[-1]
+    velocity = read_internal_field(last / "U")[:, 0]
+    alpha = read_internal_field(last / "alpha.metal")
+    x, z, h = cell_centres_2d(case)
+    length = x.max() + h / 2
+    column = np.isclose(x, length / 2 - h / 2) | np.isclose(x, length / 2 + h / 2)
+    heights = np.unique(z[column])
+    u = np.array([velocity[column & np.isclose(z, zk)].mean() for zk in heights])
+    a = np.array([alpha[column & np.isclose(z, zk)].mean() for zk in heights])
+    depth = (a * h).sum()
+    liquid = heights < depth
+
+    hot = dictionary_scalar(case, "0/T", "boundaryField/hot/value")
+    cold = dictionary_scalar(case, "0/T", "boundaryField/cold/value")
+    mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
+    tau = d_sigma_d_t * (cold - hot) / length
+    expected = tau * depth / (4 * mu)
+
+    zl = heights[liquid]
+    coeffs = np.linalg.lstsq(np.stack([zl, zl**2], axis=1), u[liquid], rcond=None)[0]
+    surface_speed = coeffs[0] * depth + coeffs[1] * depth**2
+    net_flux = (u[liquid] * h).sum()
+    print(f"dsigma/dT {d_sigma_d_t:+.2e}: depth {depth * 1e3:.4f} mm, surface speed "
+          f"{surface_speed:.5e} m/s, tau d/(4 mu) = {expected:.5e} m/s "
+          f"({100 * (surface_speed / expected - 1):+.2f} %); net liquid flux {net_flux:.2e} m2/s")
+    assert math.copysign(1, surface_speed) == math.copysign(1, expected)
+    assert abs(surface_speed - expected) / abs(expected) < SURFACE_VELOCITY_TOLERANCE
+    # A return flow: the liquid column carries (almost) nothing net
+    assert abs(net_flux) < 0.05 * abs(expected) * depth

@@ -134,20 +134,29 @@ void Foam::fv::evaporation::update()
 
     massRate_.setSize(mesh_.nCells());
     massRate_ = 0;
+    heatSink_.setSize(mesh_.nCells());
+    heatSink_ = 0;
     recoilForce_.setSize(mesh_.nCells());
     recoilForce_ = Zero;
 
     if (model_ == evaporationModel::paper)
     {
-        const volScalarField Cp1(mixture.Cp1());
+        // Eq. 38 with the sensible enthalpy for cp (T - T_b), so that it
+        // also holds for a temperature-dependent cp.  The vapour leaves at
+        // T_b: the solver removes the metal with h1(T), so the sink here is
+        // L_b less the superheat h1(T) - h1(T_b) the vapour does not carry,
+        // and the metal that stays is left at T_b
+        const scalar hBoiling =
+            mixture.metalSensibleEnthalpy(boilingTemperature_);
         forAll(massRate_, celli)
         {
-            const scalar superheat = T[celli] - boilingTemperature_;
-            if (superheat > 0 && alpha[celli] > 0)
+            if (T[celli] > boilingTemperature_ && alpha[celli] > 0)
             {
-                const scalar we =
-                    min(Cp1[celli]*superheat/latentHeat_, scalar(1));
+                const scalar superheat =
+                    mixture.metalSensibleEnthalpy(T[celli]) - hBoiling;
+                const scalar we = min(superheat/latentHeat_, scalar(1));
                 massRate_[celli] = we*alpha[celli]*rho1[celli]*rDeltaT;
+                heatSink_[celli] = massRate_[celli]*(latentHeat_ - superheat);
             }
         }
     }
@@ -173,6 +182,8 @@ void Foam::fv::evaporation::update()
                     max(alpha[celli], scalar(0))*rho1[celli]*rDeltaT
                 );
 
+                heatSink_[celli] = massRate_[celli]*latentHeat_;
+
                 if (recoilPressure_)
                 {
                     // Into the metal: along grad(alpha)
@@ -190,7 +201,8 @@ void Foam::fv::evaporation::update()
     {
         Info<< type() << ' ' << name_ << ": mass rate = " << massRate
             << " kg/s, evaporated mass = " << evaporatedMass_
-            << " kg, heat sink = " << massRate*latentHeat_ << " W";
+            << " kg, latent heat = " << massRate*latentHeat_
+            << " W, heat sink = " << gSum(heatSink_*mesh_.V()) << " W";
         if (recoilPressure_)
         {
             Info<< ", recoil force = " << gSum(recoilForce_*mesh_.V())
@@ -253,7 +265,7 @@ void Foam::fv::evaporation::addSup
     else if (fieldi == 1)
     {
         // Latent heat [W/m3]
-        S.field() = massRate_*latentHeat_;
+        S.field() = heatSink_;
     }
 
     eqn -= S;

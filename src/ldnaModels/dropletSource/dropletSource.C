@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dropletSource.H"
+#include "cellSource.H"
 #include "metalGasMixture.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
@@ -515,19 +516,10 @@ void Foam::fv::dropletSource::addSup
 {
     update();
 
-    const dimensionSet sourceDims(eqn.dimensions()/dimVolume);
-
     if (fieldi == 0)
     {
         // Metal mass [kg/m3/s]
-        DimensionedField<scalar, volMesh> S
-        (
-            IOobject(name_ + ":massSource", mesh_.time().timeName(), mesh_),
-            mesh_,
-            dimensionedScalar(sourceDims, Zero)
-        );
-        S.field() = massSource_;
-        eqn += S;
+        eqn += cellSource(eqn, name_ + ":massSource", massSource_);
     }
     else if (fieldi == 2)
     {
@@ -540,15 +532,12 @@ void Foam::fv::dropletSource::addSup
             mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
         const volScalarField h1(mixture.h1());
 
-        DimensionedField<scalar, volMesh> Su
+        eqn += cellSource
         (
-            IOobject(name_ + ":enthalpySource", mesh_.time().timeName(), mesh_),
-            mesh_,
-            dimensionedScalar(sourceDims, Zero)
+            eqn,
+            name_ + ":enthalpySource",
+            scalarField(enthalpySource_ - massSource_*h1.primitiveField())
         );
-        Su.field() = enthalpySource_ - massSource_*h1.primitiveField();
-
-        eqn += Su;
     }
 }
 
@@ -562,14 +551,7 @@ void Foam::fv::dropletSource::addSup
 {
     update();
 
-    DimensionedField<vector, volMesh> S
-    (
-        IOobject(name_ + ":momentumSource", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedVector(eqn.dimensions()/dimVolume, Zero)
-    );
-    S.field() = momentumSource_;
-    eqn += S;
+    eqn += cellSource(eqn, name_ + ":momentumSource", momentumSource_);
 }
 
 

@@ -5,6 +5,7 @@
 #include "evaporation.H"
 #include "metalGasMixture.H"
 #include "interfaceDelta.H"
+#include "cellSource.H"
 #include "fvMatrices.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
@@ -250,25 +251,16 @@ void Foam::fv::evaporation::addSup
 {
     update();
 
-    DimensionedField<scalar, volMesh> S
-    (
-        IOobject(name_ + ":sink", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedScalar(eqn.dimensions()/dimVolume, Zero)
-    );
-
     if (fieldi == 0)
     {
         // Metal mass [kg/m3/s]
-        S.field() = massRate_;
+        eqn -= cellSource(eqn, name_ + ":massSink", massRate_);
     }
     else if (fieldi == 1)
     {
         // Latent heat [W/m3]
-        S.field() = heatSink_;
+        eqn -= cellSource(eqn, name_ + ":heatSink", heatSink_);
     }
-
-    eqn -= S;
 }
 
 
@@ -280,15 +272,7 @@ void Foam::fv::evaporation::addSup
 )
 {
     update();
-
-    DimensionedField<vector, volMesh> F
-    (
-        IOobject(name_ + ":recoil", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedVector(eqn.dimensions()/dimVolume, Zero)
-    );
-    F.field() = recoilForce_;
-    eqn += F;
+    eqn += cellSource(eqn, name_ + ":recoil", recoilForce_);
 }
 
 

@@ -9,19 +9,29 @@ gradient.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from ldna.foamcase import dictionary_scalar, read_internal_field, run, time_directories
+from ldna.foamdict import set_entry
 
 #: Allowed errors (issue 5)
 LAPLACE_TOLERANCE = 0.02
 SPURIOUS_VELOCITY_SCALE = 1e-3     # times sigma/mu
 SURFACE_VELOCITY_TOLERANCE = 0.05
+#: The undriven layer: time it runs [s] and the largest metal speed it may
+#: reach, as a share of the speed a 100 K difference drives on liquid (the
+#: gas between walls of different temperature moves by its own expansion
+#: and drags the surface cells a little)
+REST_END_TIME = 0.05
+REST_SPEED_SHARE = 1e-2
 
 PROPERTIES = "constant/thermophysicalProperties"
+
+MARANGONI_FORCE = re.compile(r"^marangoniForce \S+: total force = \((\S+) (\S+) (\S+)\) N", re.M)
 
 
 def cell_centres_2d(case: Path) -> tuple[np.ndarray, np.ndarray, float]:
@@ -103,3 +113,44 @@ def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -
     assert abs(surface_speed - expected) / abs(expected) < SURFACE_VELOCITY_TOLERANCE
     # A return flow: the liquid column carries (almost) nothing net
     assert abs(net_flux) < 0.05 * abs(expected) * depth
+
+
+@pytest.mark.parametrize("hot,cold,reason", [
+    (1950.0, 1950.0, "uniform temperature: grad(sigma) = 0"),
+    (1600.0, 1500.0, "solid metal: the stress acts on liquid only"),
+])
+def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Path, hot: float, cold: float,
+                                       reason: str) -> None:
+    """No Marangoni stress, no flow: a flat surface stays at rest (balanced force).
+
+    The logged Marangoni force vanishes (to round-off) in every step.
+    """
+    case = marangoni_layer_case
+    set_entry(case / "0" / "T", "internalField", f"uniform {0.5 * (hot + cold)}")
+    run(case, f"foamDictionary -entry boundaryField/hot/value -set 'uniform {hot}' 0/T")
+    run(case, f"foamDictionary -entry boundaryField/cold/value -set 'uniform {cold}' 0/T")
+    set_entry(case / "system" / "controlDict", "endTime", f"{REST_END_TIME:g}")
+    set_entry(case / "system" / "controlDict", "writeInterval", f"{REST_END_TIME:g}")
+    run(case, "ldnaFoam")
+
+    last = time_directories(case)[-1]
+    # In the metal: the gas between the walls of different temperature may
+    # move by its own expansion
+    metal = read_internal_field(last / "alpha.metal") > 0.5
+    speed = np.linalg.norm(read_internal_field(last / "U")[metal], axis=1).max()
+    # The return-flow speed the same layer reaches under 100 K of difference
+    x, _, h = cell_centres_2d(case)
+    length = x.max() + h / 2
+    depth = read_internal_field(last / "alpha.metal").sum() * h * h / length
+    mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
+    d_sigma_d_t = dictionary_scalar(case, PROPERTIES, "sigma/dSigmadT")
+    driven = abs(d_sigma_d_t) * 100.0 / length * depth / (4 * mu)
+    forces = [tuple(float(v) for v in m.groups()) for m in MARANGONI_FORCE.finditer(
+        (case / "log.ldnaFoam").read_text())]
+    largest_force = np.abs(np.array(forces)).max()
+    print(f"{reason}: largest Marangoni force {largest_force:.3e} N, largest metal speed "
+          f"{speed:.3e} m/s after {REST_END_TIME} s (a 100 K difference on liquid drives "
+          f"{driven:.3e} m/s)")
+    # Against the force of that 100 K difference on the layer (one cell deep)
+    assert forces and largest_force < 1e-12 * abs(d_sigma_d_t) * 100.0 * h
+    assert speed < REST_SPEED_SHARE * driven

@@ -14,6 +14,10 @@ namespace Foam
 
 const Foam::scalar Foam::metalGasMixture::propertyCheckTmin = 200;
 const Foam::scalar Foam::metalGasMixture::propertyCheckTmax = 3200;
+const Foam::word Foam::metalGasMixture::interfacePressureName
+(
+    "interfacePressure"
+);
 
 namespace
 {
@@ -631,12 +635,22 @@ void Foam::metalGasMixture::correctCurvature()
 Foam::tmp<Foam::surfaceScalarField>
 Foam::metalGasMixture::surfaceTensionForce() const
 {
-    if (curvatureSmoothing_ == 0)
+    tmp<surfaceScalarField> tforce
+    (
+        curvatureSmoothing_ == 0
+      ? interfaceProperties::surfaceTensionForce()
+      : fvc::interpolate(sigma())*curvaturef_*fvc::snGrad(alpha1())
+    );
+
+    const fvMesh& mesh = alpha1().mesh();
+    if (mesh.foundObject<volScalarField>(interfacePressureName))
     {
-        return interfaceProperties::surfaceTensionForce();
+        const volScalarField& pInterface =
+            mesh.lookupObject<volScalarField>(interfacePressureName);
+        tforce.ref() += fvc::interpolate(pInterface)*fvc::snGrad(alpha1());
     }
 
-    return fvc::interpolate(sigma())*curvaturef_*fvc::snGrad(alpha1());
+    return tforce;
 }
 
 

@@ -92,17 +92,34 @@ void Foam::fv::evaporation::readCoeffs()
 
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     TName_ = coeffs_.lookupOrDefault<word>("T", "T");
-    UName_ = coeffs_.lookupOrDefault<word>("U", "U");
     log_ = coeffs_.lookupOrDefault<bool>("log", true);
 
-    fieldNames_.setSize(recoilPressure_ ? 3 : 2);
+    fieldNames_.setSize(2);
     fieldNames_[0] = alphaName_;
     fieldNames_[1] = TName_;
-    if (recoilPressure_)
-    {
-        fieldNames_[2] = UName_;
-    }
     applied_.setSize(fieldNames_.size(), false);
+
+    if (recoilPressure_ && !recoilPressureField_.valid())
+    {
+        recoilPressureField_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    metalGasMixture::interfacePressureName,
+                    mesh_.time().timeName(),
+                    mesh_
+                ),
+                mesh_,
+                dimensionedScalar(dimPressure, Zero)
+            )
+        );
+    }
+    else if (!recoilPressure_)
+    {
+        recoilPressureField_.clear();
+    }
 
     updatedTimeIndex_ = -1;
 }
@@ -137,8 +154,7 @@ void Foam::fv::evaporation::update()
     massRate_ = 0;
     heatSink_.setSize(mesh_.nCells());
     heatSink_ = 0;
-    recoilForce_.setSize(mesh_.nCells());
-    recoilForce_ = Zero;
+    vector recoilForce(Zero);
 
     if (model_ == evaporationModel::paper)
     {
@@ -185,12 +201,20 @@ void Foam::fv::evaporation::update()
 
                 heatSink_[celli] = massRate_[celli]*latentHeat_;
 
-                if (recoilPressure_)
-                {
-                    // Into the metal: along grad(alpha)
-                    recoilForce_[celli] =
-                        recoilFactor*pSat*deltaNormal[celli];
-                }
+                // Into the metal: along grad(alpha) (for the log)
+                recoilForce +=
+                    recoilFactor*pSat*deltaNormal[celli]*mesh_.V()[celli];
+            }
+        }
+
+        if (recoilPressure_)
+        {
+            // In every cell: the face force p_r snGrad(alpha) picks the
+            // interface
+            volScalarField& pRecoil = recoilPressureField_.ref();
+            forAll(pRecoil, celli)
+            {
+                pRecoil[celli] = recoilFactor*saturationPressure(T[celli]);
             }
         }
     }
@@ -206,8 +230,8 @@ void Foam::fv::evaporation::update()
             << " W, heat sink = " << gSum(heatSink_*mesh_.V()) << " W";
         if (recoilPressure_)
         {
-            Info<< ", recoil force = " << gSum(recoilForce_*mesh_.V())
-                << " N";
+            Info<< ", recoil force = "
+                << returnReduce(recoilForce, sumOp<vector>()) << " N";
         }
         Info<< endl;
     }
@@ -261,18 +285,6 @@ void Foam::fv::evaporation::addSup
         // Latent heat [W/m3]
         eqn -= cellSource(eqn, name_ + ":heatSink", heatSink_);
     }
-}
-
-
-void Foam::fv::evaporation::addSup
-(
-    const volScalarField& rho,
-    fvMatrix<vector>& eqn,
-    const label fieldi
-)
-{
-    update();
-    eqn += cellSource(eqn, name_ + ":recoil", recoilForce_);
 }
 
 

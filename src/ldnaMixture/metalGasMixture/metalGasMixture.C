@@ -74,7 +74,7 @@ void Foam::metalGasMixture::readCoeffs()
             << exit(FatalIOError);
     }
 
-    curvatureSmoothing_ = lookupOrDefault<label>("curvatureSmoothing", 0);
+    curvatureSmoothing_ = lookupOrDefault<label>("curvatureSmoothing", 2);
     if (curvatureSmoothing_ < 0)
     {
         FatalIOErrorInFunction(*this)
@@ -597,6 +597,11 @@ void Foam::metalGasMixture::correctCurvature()
     for (label pass = 0; pass < curvatureSmoothing_; ++pass)
     {
         alphaSmooth = fvc::average(fvc::interpolate(alphaSmooth));
+
+        // The boundary values follow alpha1's conditions (zeroGradient at
+        // walls); left at the unsmoothed values, they bent the smoothed
+        // interface where it meets a wall
+        alphaSmooth.correctBoundaryConditions();
     }
 
     // Unit normals in the cells of the (smoothed) interface band only: the

@@ -622,8 +622,10 @@ void Foam::metalGasMixture::correctCurvature()
         }
     }
 
-    // nHat stays zero on boundary faces: no capillary flux through walls
-    // and open patches (the 90 degree contact angle of a zeroGradient alpha)
+    // Processor and symmetry faces take their neighbour's (mirrored) normal;
+    // on walls and open patches nHat stays zero: no capillary flux through
+    // them (the 90 degree contact angle of a zeroGradient alpha)
+    nHat.correctBoundaryConditions();
     curvature_ = -fvc::div(fvc::interpolate(nHat) & mesh.Sf());
 
     // Face curvature: the cell curvatures weighted by |grad alpha|, so that

@@ -49,6 +49,18 @@ BAD_INPUTS = [
     ("negative latent heat", THERMO, "metal/latentHeat", "-1", ["latentHeat", ">= 0"]),
     ("zero gas constant", THERMO, "gas/R", "0", ["'R'", "> 0"]),
     ("missing solidus", THERMO, "metal/solidus", None, ["solidus"]),
+    ("surface tension negative below 3200 K", THERMO, "sigma",
+     "{ type linear; sigma0 0.3; dSigmadT -4.3e-4; Tref 1950; }",
+     ["surface tension", "must be > 0", "3200"]),
+    ("negative sulphur activity", THERMO, "sigma", "{ type sahooDebRoy; activity -0.01; }",
+     ["activity", ">= 0"]),
+    ("recondensation of 1", FV_OPTIONS, "evaporation",
+     "{ type evaporation; model hertzKnudsen; boilingTemperature 3090; latentHeat 6.5e6; "
+     "molarMass 0.05585; recondensation 1; }",
+     ["recondensation", "[0, 1)"]),
+    ("unknown evaporation model", FV_OPTIONS, "evaporation",
+     "{ type evaporation; model boiling; boilingTemperature 3090; latentHeat 6.5e6; }",
+     ["model", "boiling", "paper or hertzKnudsen"]),
 ]
 
 

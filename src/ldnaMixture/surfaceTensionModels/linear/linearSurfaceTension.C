@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "linearSurfaceTension.H"
-#include "metalGasMixture.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -22,7 +21,6 @@ namespace surfaceTensionModels
 
 void Foam::surfaceTensionModels::linear::readCoeffs(const dictionary& sigmaDict)
 {
-    readTName(sigmaDict);
     sigma0_ = sigmaDict.get<scalar>("sigma0");
     dSigmadT_ = sigmaDict.get<scalar>("dSigmadT");
     Tref_ = sigmaDict.get<scalar>("Tref");
@@ -33,13 +31,6 @@ void Foam::surfaceTensionModels::linear::readCoeffs(const dictionary& sigmaDict)
             << "sigma0 " << sigma0_ << " N/m and Tref " << Tref_
             << " K must be > 0" << exit(FatalIOError);
     }
-
-    checkPositive
-    (
-        sigmaDict,
-        metalGasMixture::propertyCheckTmin,
-        metalGasMixture::propertyCheckTmax
-    );
 }
 
 
@@ -56,7 +47,7 @@ Foam::surfaceTensionModels::linear::linear
     dSigmadT_(0),
     Tref_(0)
 {
-    readCoeffs(dict);
+    read(dict);
 }
 
 
@@ -65,13 +56,6 @@ Foam::surfaceTensionModels::linear::linear
 Foam::scalar Foam::surfaceTensionModels::linear::sigma(const scalar T) const
 {
     return sigma0_ + dSigmadT_*(T - Tref_);
-}
-
-
-bool Foam::surfaceTensionModels::linear::readDict(const dictionary& dict)
-{
-    readCoeffs(surfaceTensionModel::sigmaDict(dict));
-    return true;
 }
 
 

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "sahooDebRoySurfaceTension.H"
-#include "metalGasMixture.H"
 #include "physicoChemicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -39,7 +38,6 @@ void Foam::surfaceTensionModels::sahooDebRoy::readCoeffs
     const dictionary& sigmaDict
 )
 {
-    readTName(sigmaDict);
     activity_ = sigmaDict.get<scalar>("activity");
     sigmaMelting_ =
         sigmaDict.lookupOrDefault<scalar>("sigmaMelting", defaultSigmaMelting);
@@ -70,13 +68,6 @@ void Foam::surfaceTensionModels::sahooDebRoy::readCoeffs
             << " and Tmelting " << Tmelting_ << " > 0"
             << exit(FatalIOError);
     }
-
-    checkPositive
-    (
-        sigmaDict,
-        metalGasMixture::propertyCheckTmin,
-        metalGasMixture::propertyCheckTmax
-    );
 }
 
 
@@ -97,7 +88,7 @@ Foam::surfaceTensionModels::sahooDebRoy::sahooDebRoy
     segregationEntropy_(0),
     adsorptionEnthalpy_(0)
 {
-    readCoeffs(dict);
+    read(dict);
 }
 
 
@@ -117,13 +108,6 @@ Foam::scalar Foam::surfaceTensionModels::sahooDebRoy::sigma
         sigmaMelting_
       - A_*(T - Tmelting_)
       - R*T*surfaceExcess_*log(1 + K*activity_);
-}
-
-
-bool Foam::surfaceTensionModels::sahooDebRoy::readDict(const dictionary& dict)
-{
-    readCoeffs(surfaceTensionModel::sigmaDict(dict));
-    return true;
 }
 
 

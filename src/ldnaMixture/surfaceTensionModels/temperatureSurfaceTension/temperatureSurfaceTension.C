@@ -4,6 +4,7 @@
 
 #include "temperatureSurfaceTension.H"
 #include "volFields.H"
+#include "metalGasMixture.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -20,22 +21,16 @@ Foam::surfaceTensionModels::temperatureSurfaceTension::temperatureSurfaceTension
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-void Foam::surfaceTensionModels::temperatureSurfaceTension::readTName
+void Foam::surfaceTensionModels::temperatureSurfaceTension::read
 (
     const dictionary& sigmaDict
 )
 {
     TName_ = sigmaDict.lookupOrDefault<word>("T", "T");
-}
+    readCoeffs(sigmaDict);
 
-
-void Foam::surfaceTensionModels::temperatureSurfaceTension::checkPositive
-(
-    const dictionary& sigmaDict,
-    const scalar Tmin,
-    const scalar Tmax
-) const
-{
+    const scalar Tmin = metalGasMixture::propertyCheckTmin;
+    const scalar Tmax = metalGasMixture::propertyCheckTmax;
     const label nSamples = 200;
     for (label i = 0; i <= nSamples; ++i)
     {
@@ -92,6 +87,16 @@ Foam::surfaceTensionModels::temperatureSurfaceTension::sigma() const
     }
 
     return tsigma;
+}
+
+
+bool Foam::surfaceTensionModels::temperatureSurfaceTension::readDict
+(
+    const dictionary& dict
+)
+{
+    read(surfaceTensionModel::sigmaDict(dict));
+    return true;
 }
 
 

@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.foamcase import alpha_bounds, read_balances, read_internal_field, run, time_directories
+from ldna.foamcase import (alpha_bounds, read_balances, read_internal_field, run,
+                           run_parallel, time_directories)
 from ldna.foamdict import set_entry
 from ldna.material import Metal
 
@@ -127,6 +128,33 @@ def test_hertz_knudsen_rate_heat_and_recoil(laser_slab_case: Path) -> None:
     print(f"pressure step across the surface {step:.1f} Pa, 0.54 p_sat = "
           f"{RECOIL_FACTOR * p_sat:.1f} Pa")
     assert abs(step - RECOIL_FACTOR * p_sat) / (RECOIL_FACTOR * p_sat) < RATE_TOLERANCE
+
+
+def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Path) -> None:
+    """The recoil joins the capillary face force on processor faces too.
+
+    The box is cut at the slab surface z = 2 mm, so that every surface face
+    is a processor face; the pressure step across the evaporating surface
+    must still be 0.54 p_sat.
+    """
+    case = laser_slab_case
+    set_entry(case / "0" / "T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
+    write_fv_options(case, evaporation_entry("hertzKnudsen", "recoilPressure yes;"))
+    run(case, "foamDictionary -entry coeffs/n -set '(1 1 2)' system/decomposeParDict")
+    run(case, "decomposePar")
+    run_parallel(case, "ldnaFoam", 2)
+    run(case, "reconstructPar -latestTime")
+
+    last = time_directories(case)[-1]
+    p = read_internal_field(last / "p_rgh")
+    alpha = read_internal_field(last / "alpha.metal")
+    expected = RECOIL_FACTOR * saturation_pressure(SURFACE_TEMPERATURE)
+    steps = p[alpha > 1 - 1e-6].max() - p[alpha < 1e-6].min(), \
+        p[alpha > 1 - 1e-6].min() - p[alpha < 1e-6].max()
+    print(f"pressure step across the surface {steps[1]:.1f} .. {steps[0]:.1f} Pa, "
+          f"0.54 p_sat = {expected:.1f} Pa")
+    for step in steps:
+        assert abs(step - expected) / expected < RATE_TOLERANCE
 
 
 def test_paper_model_rate_and_boiling_point(laser_slab_case: Path) -> None:

@@ -22,12 +22,8 @@ from ldna.foamdict import set_entry
 LAPLACE_TOLERANCE = 0.02
 SPURIOUS_VELOCITY_SCALE = 1e-3     # times sigma/mu
 SURFACE_VELOCITY_TOLERANCE = 0.05
-#: The undriven layer: time it runs [s] and the largest metal speed it may
-#: reach, as a share of the speed a 100 K difference drives on liquid (the
-#: gas between walls of different temperature moves by its own expansion
-#: and drags the surface cells a little)
+#: The undriven layer: the time it runs [s]
 REST_END_TIME = 0.05
-REST_SPEED_SHARE = 1e-2
 
 PROPERTIES = "constant/thermophysicalProperties"
 
@@ -115,12 +111,20 @@ def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -
     assert abs(net_flux) < 0.05 * abs(expected) * depth
 
 
-@pytest.mark.parametrize("hot,cold,reason", [
-    (1950.0, 1950.0, "uniform temperature: grad(sigma) = 0"),
-    (1600.0, 1500.0, "solid metal: the stress acts on liquid only"),
-])
+# (hot wall, cold wall [K], largest metal speed as a share of the speed a
+# 100 K difference drives on liquid, what is tested).  Between walls of
+# different temperature the gas moves by its own expansion and drags the
+# surface cells a little (measured 9e-6 m/s, 0.1 %): the solid layer's
+# bound leaves room for that, the uniform one's only for round-off.
+AT_REST = [
+    (1950.0, 1950.0, 1e-9, "uniform temperature: grad(sigma) = 0"),
+    (1600.0, 1500.0, 1e-2, "solid metal: the stress acts on liquid only"),
+]
+
+
+@pytest.mark.parametrize("hot,cold,speed_share,reason", AT_REST, ids=[r[3] for r in AT_REST])
 def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Path, hot: float, cold: float,
-                                       reason: str) -> None:
+                                       speed_share: float, reason: str) -> None:
     """No Marangoni stress, no flow: a flat surface stays at rest (balanced force).
 
     The logged Marangoni force vanishes (to round-off) in every step.
@@ -153,4 +157,4 @@ def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Path, hot: float, c
           f"{driven:.3e} m/s)")
     # Against the force of that 100 K difference on the layer (one cell deep)
     assert forces and largest_force < 1e-12 * abs(d_sigma_d_t) * 100.0 * h
-    assert speed < REST_SPEED_SHARE * driven
+    assert speed < speed_share * driven

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "metalGasMixture.H"
+#include "interfaceDelta.H"
 #include "fvc.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -19,14 +20,6 @@ const Foam::word Foam::metalGasMixture::interfacePressureName
     "interfacePressure"
 );
 
-namespace
-{
-
-// A cell belongs to the interface band where the metal fraction changes by
-// more than this across it
-const Foam::scalar interfaceBandGradient = 1e-3;
-
-}
 const Foam::scalar Foam::metalGasMixture::Tref = 298.15;
 
 
@@ -362,8 +355,6 @@ Foam::metalGasMixture::metalGasMixture
         dimensionedScalar(dimDynamicViscosity, Zero)
     ),
     pMin_("pMin", dimPressure, Zero),
-    Boussinesq_(true),
-    referenceDensity_(0),
     sigmaModel_(surfaceTensionModel::New(*this, U.mesh())),
     curvatureSmoothing_(0),
     curvature_
@@ -383,13 +374,15 @@ Foam::metalGasMixture::metalGasMixture
         U.mesh(),
         dimensionedScalar(dimless/dimLength, Zero)
     ),
+    Boussinesq_(true),
+    referenceDensity_(0),
     Tsolidus_(0),
     Tliquidus_(0),
     latentHeat_(0),
     Rgas_(0)
 {
     readCoeffs();
-    correctCurvature();
+    correct();
 
     if (min(T_).value() <= 0)
     {
@@ -585,12 +578,6 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
 
 void Foam::metalGasMixture::correctCurvature()
 {
-    if (curvatureSmoothing_ == 0)
-    {
-        // interfaceProperties' curvature
-        return;
-    }
-
     const fvMesh& mesh = alpha1().mesh();
 
     volScalarField alphaSmooth("alphaSmooth", alpha1());
@@ -604,8 +591,7 @@ void Foam::metalGasMixture::correctCurvature()
         alphaSmooth.correctBoundaryConditions();
     }
 
-    // Unit normals in the cells of the (smoothed) interface band only: the
-    // direction of the round-off gradients of the bulk phases is noise
+    // Unit normals in the cells of the (smoothed) interface band only
     const volVectorField gradAlpha(fvc::grad(alphaSmooth, "nHat"));
     volVectorField nHat
     (
@@ -613,14 +599,7 @@ void Foam::metalGasMixture::correctCurvature()
         mesh,
         dimensionedVector(dimless, Zero)
     );
-    forAll(nHat, celli)
-    {
-        const scalar magGrad = mag(gradAlpha[celli]);
-        if (magGrad*cbrt(mesh.V()[celli]) > interfaceBandGradient)
-        {
-            nHat[celli] = gradAlpha[celli]/magGrad;
-        }
-    }
+    nHat.primitiveFieldRef() = metalInterfaceNormal(gradAlpha);
 
     // Processor and symmetry faces take their neighbour's (mirrored) normal;
     // on walls and open patches nHat stays zero: no capillary flux through
@@ -628,7 +607,8 @@ void Foam::metalGasMixture::correctCurvature()
     nHat.correctBoundaryConditions();
     curvature_ = -fvc::div(fvc::interpolate(nHat) & mesh.Sf());
 
-    // Face curvature: the cell curvatures weighted by |grad alpha|, so that
+    // Face curvature: the cell curvatures weighted by |grad alpha| of the
+    // smoothed field, so that
     // a face of the sharp interface takes the curvature of the cells the
     // interface passes through, not that of the band's edge cells, where
     // the normals fade out and -div(nHat) is an artefact of the fading
@@ -663,8 +643,14 @@ Foam::metalGasMixture::surfaceTensionForce() const
 
 void Foam::metalGasMixture::correct()
 {
-    interfaceProperties::correct();
-    correctCurvature();
+    if (curvatureSmoothing_ == 0)
+    {
+        interfaceProperties::correct();
+    }
+    else
+    {
+        correctCurvature();
+    }
 }
 
 

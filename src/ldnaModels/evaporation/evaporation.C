@@ -180,8 +180,12 @@ void Foam::fv::evaporation::update()
     else
     {
         const scalar R = constant::physicoChemical::R.value();
-        const volScalarField delta(metalSurfaceDelta(alpha));
-        const volVectorField deltaNormal(metalSurfaceDeltaNormal(alpha));
+        const volVectorField gradAlpha(fvc::grad(alpha));
+        const volScalarField delta(metalSurfaceDelta(alpha, gradAlpha));
+        const volVectorField deltaNormal
+        (
+            metalSurfaceDeltaNormal(alpha, gradAlpha)
+        );
         forAll(massRate_, celli)
         {
             if (delta[celli] > 0)
@@ -201,7 +205,8 @@ void Foam::fv::evaporation::update()
 
                 heatSink_[celli] = massRate_[celli]*latentHeat_;
 
-                // Into the metal: along grad(alpha) (for the log)
+                // Into the metal: along grad(alpha); the log's cell sum of
+                // the force the face form p_r snGrad(alpha) applies
                 recoilForce +=
                     recoilFactor*pSat*deltaNormal[celli]*mesh_.V()[celli];
             }
@@ -216,6 +221,9 @@ void Foam::fv::evaporation::update()
             {
                 pRecoil[celli] = recoilFactor*saturationPressure(T[celli]);
             }
+
+            // Processor faces interpolate with the neighbour's value
+            pRecoil.correctBoundaryConditions();
         }
     }
 

@@ -442,17 +442,8 @@ Foam::scalar Foam::fv::laserHeatSource::traceRays(scalarField& absorbed)
     // Fields the rays see
     const volScalarField& alpha =
         mesh_.lookupObject<volScalarField>(alphaName_);
-    const volVectorField gradAlpha(fvc::grad(alpha));
-    vectorField normal(mesh_.nCells(), Zero);
-    forAll(normal, celli)
-    {
-        const scalar magGrad = mag(gradAlpha[celli]);
-        if (magGrad*cbrt(mesh_.V()[celli]) > 1e-3)
-        {
-            // Out of the metal
-            normal[celli] = -gradAlpha[celli]/magGrad;
-        }
-    }
+    // Interface normals out of the metal
+    const vectorField normal(-metalInterfaceNormal(fvc::grad(alpha)()));
     const scalarField a(cellAbsorptivity());
 
     // The random numbers of scattering differ per processor

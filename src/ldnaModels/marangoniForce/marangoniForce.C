@@ -5,6 +5,7 @@
 #include "marangoniForce.H"
 #include "metalGasMixture.H"
 #include "interfaceDelta.H"
+#include "cellSource.H"
 #include "fvMatrices.H"
 #include "fvcGrad.H"
 #include "addToRunTimeSelectionTable.H"
@@ -38,8 +39,7 @@ void Foam::fv::marangoniForce::readCoeffs()
 }
 
 
-Foam::tmp<Foam::volVectorField::Internal>
-Foam::fv::marangoniForce::force() const
+Foam::tmp<Foam::vectorField> Foam::fv::marangoniForce::force()
 {
     const volScalarField& alpha =
         mesh_.lookupObject<volScalarField>(alphaName_);
@@ -50,18 +50,13 @@ Foam::fv::marangoniForce::force() const
 
     const volVectorField gradSigma(fvc::grad(mixture.sigma()));
     const volVectorField gradAlpha(fvc::grad(alpha));
-    const volScalarField delta(metalSurfaceDelta(alpha));
-
-    tmp<volVectorField::Internal> tf
+    const scalarField delta
     (
-        new volVectorField::Internal
-        (
-            IOobject(name_ + ":force", mesh_.time().timeName(), mesh_),
-            mesh_,
-            dimensionedVector(dimForce/dimVolume, Zero)
-        )
+        metalSurfaceDelta(alpha, gradAlpha)().primitiveField()
     );
-    vectorField& f = tf.ref().field();
+
+    tmp<vectorField> tf(new vectorField(mesh_.nCells(), Zero));
+    vectorField& f = tf.ref();
 
     forAll(f, celli)
     {
@@ -79,9 +74,10 @@ Foam::fv::marangoniForce::force() const
 
     if (log_ && loggedTimeIndex_ != mesh_.time().timeIndex())
     {
+        loggedTimeIndex_ = mesh_.time().timeIndex();
+
         // The tangential stress integrated over the surface [N] and the
         // largest stress [N/m2]
-        const scalarField& V = mesh_.V();
         scalar maxStress = 0;
         forAll(f, celli)
         {
@@ -91,7 +87,7 @@ Foam::fv::marangoniForce::force() const
             }
         }
         Info<< type() << ' ' << name_ << ": total force = "
-            << gSum(f*V) << " N, max tangential stress = "
+            << gSum(f*mesh_.V()) << " N, max tangential stress = "
             << returnReduce(maxStress, maxOp<scalar>()) << " N/m2" << endl;
     }
 
@@ -125,13 +121,7 @@ void Foam::fv::marangoniForce::addSup
     const label fieldi
 )
 {
-    const bool logNow =
-        log_ && loggedTimeIndex_ != mesh_.time().timeIndex();
-    eqn += force();
-    if (logNow)
-    {
-        loggedTimeIndex_ = mesh_.time().timeIndex();
-    }
+    eqn += cellSource(eqn, name_ + ":force", force()());
 }
 
 

@@ -12,9 +12,10 @@ independently of the solver, from the case's own dictionaries:
   1 % (h from the 316L data, latent heat included);
 - momentum: without gravity and before anything reaches a wall, the metal's
   momentum equals the integral of mass rate times droplet velocity within 2 %
-  (without surface tension: the continuum-surface-force of OpenFOAM's
-  interfaceProperties puts a net force of up to 75 % of the transverse
-  momentum on droplets less than two cells across, measured here);
+  (without surface tension: the continuum surface force put a net force of
+  up to 75 % of the transverse momentum on droplets less than two cells
+  across, measured here with OpenFOAM's curvature before the smoothed
+  curvature became the default, and not measured since);
 - boundedness: alpha stays within [-1e-6, 1 + 1e-6], no field is NaN.
 """
 from __future__ import annotations

@@ -643,11 +643,11 @@ Foam::metalGasMixture::surfaceTensionForce() const
 
 void Foam::metalGasMixture::correct()
 {
-    if (curvatureSmoothing_ == 0)
-    {
-        interfaceProperties::correct();
-    }
-    else
+    // Always: besides its curvature it updates nHatf, the interface normal
+    // flux of the alpha equation's interface compression
+    interfaceProperties::correct();
+
+    if (curvatureSmoothing_ > 0)
     {
         correctCurvature();
     }

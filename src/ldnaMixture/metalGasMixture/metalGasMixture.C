@@ -158,6 +158,35 @@ void Foam::metalGasMixture::readCoeffs()
             << "Entry 'R' (specific gas constant) must be > 0 J/kg/K, not "
             << Rgas_ << exit(FatalIOError);
     }
+    const word gasDensityModel
+    (
+        gas.lookupOrDefault<word>("densityModel", "idealGas")
+    );
+    if (gasDensityModel != "idealGas" && gasDensityModel != "Boussinesq")
+    {
+        FatalIOErrorInFunction(gas)
+            << "Entry 'densityModel' must be idealGas or Boussinesq, not "
+            << gasDensityModel << exit(FatalIOError);
+    }
+    gasBoussinesq_ = gasDensityModel == "Boussinesq";
+    if (gasBoussinesq_)
+    {
+        gasReferenceTemperature_ = gas.get<scalar>("referenceTemperature");
+        if (!(gasReferenceTemperature_ > 0))
+        {
+            FatalIOErrorInFunction(gas)
+                << "Entry 'referenceTemperature' must be > 0 K, not "
+                << gasReferenceTemperature_ << exit(FatalIOError);
+        }
+    }
+    Info<< "    gas density: " << gasDensityModel;
+    if (gasBoussinesq_)
+    {
+        Info<< ", p/(R " << gasReferenceTemperature_
+            << " K) for mass and inertia";
+    }
+    Info<< endl;
+
     CpGas_ = readPositiveFunction(gas, "Cp", Tmin, Tmax);
     kappaGas_ = readPositiveFunction(gas, "kappa", Tmin, Tmax);
     muGas_ = readPositiveFunction(gas, "mu", Tmin, Tmax);
@@ -379,7 +408,9 @@ Foam::metalGasMixture::metalGasMixture
     Tsolidus_(0),
     Tliquidus_(0),
     latentHeat_(0),
-    Rgas_(0)
+    Rgas_(0),
+    gasBoussinesq_(false),
+    gasReferenceTemperature_(0)
 {
     readCoeffs();
     correct();
@@ -541,6 +572,16 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho() const
 
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rhoGravity() const
 {
+    if (gasBoussinesq_)
+    {
+        const dimensionedScalar R
+        (
+            "R",
+            dimVelocity*dimVelocity/dimTemperature,
+            Rgas_
+        );
+        return alpha1()*rho1Gravity_ + alpha2()*p_/(R*T_);
+    }
     return alpha1()*rho1Gravity_ + alpha2()*rho2_;
 }
 
@@ -753,7 +794,10 @@ void Foam::metalGasMixture::correctThermo()
     (
         "psi2",
         dimDensity/dimPressure,
-        [&](scalar T, scalar) { return 1/(Rgas_*T); }
+        [&](scalar T, scalar)
+        {
+            return 1/(Rgas_*(gasBoussinesq_ ? gasReferenceTemperature_ : T));
+        }
     );
     rho2_ = psi2_*p_;
 

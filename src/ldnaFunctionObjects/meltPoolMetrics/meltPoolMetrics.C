@@ -1,0 +1,401 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "meltPoolMetrics.H"
+#include "volFields.H"
+#include "IOdictionary.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(meltPoolMetrics, 0);
+    addToRunTimeSelectionTable(functionObject, meltPoolMetrics, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+namespace
+{
+
+//- The case's material dictionary, read without registering it
+Foam::IOdictionary readThermophysicalProperties(const Foam::fvMesh& mesh)
+{
+    return Foam::IOdictionary
+    (
+        Foam::IOobject
+        (
+            "thermophysicalProperties",
+            mesh.time().constant(),
+            mesh,
+            Foam::IOobject::MUST_READ,
+            Foam::IOobject::NO_WRITE,
+            false
+        )
+    );
+}
+
+
+//- A unit direction from the dictionary; zero length is an input error
+Foam::vector readUnitDirection
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::vector& deflt
+)
+{
+    const Foam::vector dir = dict.lookupOrDefault<Foam::vector>(key, deflt);
+    if (Foam::mag(dir) < Foam::VSMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << dir << " has no direction: give a non-zero vector"
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return dir/Foam::mag(dir);
+}
+
+} // End anonymous namespace
+
+
+Foam::scalar
+Foam::functionObjects::meltPoolMetrics::fusionTemperatureFromProperties() const
+{
+    const IOdictionary properties(readThermophysicalProperties(mesh_));
+    const word metal = properties.get<wordList>("phases").first();
+    const dictionary& metalDict = properties.subDict(metal);
+
+    return 0.5*(metalDict.get<scalar>("solidus") + metalDict.get<scalar>("liquidus"));
+}
+
+
+void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
+{
+    TName_ = dict.lookupOrDefault<word>("T", "T");
+
+    if (dict.found("alpha"))
+    {
+        alphaName_ = dict.get<word>("alpha");
+    }
+    else
+    {
+        const IOdictionary properties(readThermophysicalProperties(mesh_));
+        alphaName_ = "alpha." + properties.get<wordList>("phases").first();
+    }
+
+    surfaceHeight_ = dict.lookupOrDefault<scalar>("surfaceHeight", 0);
+
+    weldDir_ = readUnitDirection(dict, "weldingDirection", vector(1, 0, 0));
+    verticalDir_ = readUnitDirection(dict, "verticalDirection", vector(0, 0, 1));
+
+    // Tolerance of the right angle between the two directions
+    const scalar orthogonalityTolerance = 1e-6;
+    if (mag(weldDir_ & verticalDir_) > orthogonalityTolerance)
+    {
+        FatalIOErrorInFunction(dict)
+            << "weldingDirection " << weldDir_ << " and verticalDirection "
+            << verticalDir_ << " must be at right angles (cosine "
+            << (weldDir_ & verticalDir_) << ", allowed |cos| <= "
+            << orthogonalityTolerance << ")"
+            << exit(FatalIOError);
+    }
+    transverseDir_ = verticalDir_ ^ weldDir_;
+
+    fusionTemperature_ =
+        dict.found("fusionTemperature")
+      ? dict.get<scalar>("fusionTemperature")
+      : fusionTemperatureFromProperties();
+
+    if (fusionTemperature_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "fusionTemperature " << fusionTemperature_
+            << " K: must be > 0" << exit(FatalIOError);
+    }
+
+    metalThreshold_ = dict.lookupOrDefault<scalar>("metalThreshold", 0.5);
+    if (metalThreshold_ <= 0 || metalThreshold_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "metalThreshold " << metalThreshold_
+            << ": must lie in (0, 1)" << exit(FatalIOError);
+    }
+
+    fixedBeadSection_ = dict.readIfPresent("beadSection", beadSection_);
+}
+
+
+void Foam::functionObjects::meltPoolMetrics::calcCellBounds()
+{
+    const pointField& points = mesh_.points();
+    const labelListList& cellPoints = mesh_.cellPoints();
+
+    cellBounds_.setSize(mesh_.nCells());
+
+    scalar wMin = GREAT;
+    scalar wMax = -GREAT;
+    sliceLength_ = GREAT;
+
+    forAll(cellPoints, celli)
+    {
+        boundBox bb(boundBox::invertedBox);
+        for (const label pointi : cellPoints[celli])
+        {
+            const point& p = points[pointi];
+            bb.add(point(p & weldDir_, p & transverseDir_, p & verticalDir_));
+        }
+        cellBounds_[celli] = bb;
+
+        wMin = min(wMin, bb.min().x());
+        wMax = max(wMax, bb.max().x());
+        sliceLength_ = min(sliceLength_, bb.span().x());
+    }
+
+    reduce(wMin, minOp<scalar>());
+    reduce(wMax, maxOp<scalar>());
+    reduce(sliceLength_, minOp<scalar>());
+
+    sliceOrigin_ = wMin;
+    nSlices_ = max(1, label(std::ceil((wMax - wMin)/sliceLength_ - SMALL)));
+}
+
+
+Foam::label Foam::functionObjects::meltPoolMetrics::slice(const scalar w) const
+{
+    const label i = label(std::floor((w - sliceOrigin_)/sliceLength_));
+    return min(max(i, 0), nSlices_ - 1);
+}
+
+
+Foam::functionObjects::meltPoolMetrics::metrics
+Foam::functionObjects::meltPoolMetrics::calculate() const
+{
+    const volScalarField& T = lookupObject<volScalarField>(TName_);
+    const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
+    const scalarField& V = mesh_.V();
+
+    metrics m;
+
+    // Pass 1: the pool, the peak temperature and the areas of each slice
+    boundBox pool(boundBox::invertedBox);
+    scalar poolBottom = GREAT;
+    scalarList fusedArea(nSlices_, Zero);
+    scalarList beadArea(nSlices_, Zero);
+
+    forAll(V, celli)
+    {
+        const boundBox& bb = cellBounds_[celli];
+        const point c = bb.centre();
+        const scalar sliceArea = V[celli]/bb.span().x();
+        const bool isMetal = alpha[celli] >= metalThreshold_;
+        const bool molten = isMetal && T[celli] >= fusionTemperature_;
+        const bool belowSurface = c.z() < surfaceHeight_;
+
+        if (isMetal)
+        {
+            m.peakTemperature = max(m.peakTemperature, T[celli]);
+        }
+        if (molten)
+        {
+            pool.add(bb);
+            m.poolVolume += alpha[celli]*V[celli];
+            if (belowSurface)
+            {
+                poolBottom = min(poolBottom, bb.min().z());
+                fusedArea[slice(c.x())] += sliceArea;
+            }
+        }
+        if (!belowSurface)
+        {
+            beadArea[slice(c.x())] += alpha[celli]*sliceArea;
+        }
+    }
+
+    reduce(pool.min(), minOp<point>());
+    reduce(pool.max(), maxOp<point>());
+    reduce(poolBottom, minOp<scalar>());
+    reduce(m.poolVolume, sumOp<scalar>());
+    reduce(m.peakTemperature, maxOp<scalar>());
+    Pstream::listCombineGather(fusedArea, plusEqOp<scalar>());
+    Pstream::listCombineScatter(fusedArea);
+    Pstream::listCombineGather(beadArea, plusEqOp<scalar>());
+    Pstream::listCombineScatter(beadArea);
+
+    if (m.poolVolume > 0)
+    {
+        m.poolLength = pool.span().x();
+        m.poolWidth = pool.span().y();
+    }
+    if (poolBottom < surfaceHeight_)
+    {
+        m.penetration = surfaceHeight_ - poolBottom;
+    }
+    m.fusedArea = max(fusedArea);
+
+    // The bead section: given, or the slice of largest bead area
+    const label beadSlice =
+        fixedBeadSection_
+      ? slice(beadSection_)
+      : findMax(beadArea);
+    m.beadSection = sliceOrigin_ + (beadSlice + 0.5)*sliceLength_;
+    m.beadArea = beadArea[beadSlice];
+
+    // Pass 2: extent of the metal above the surface in the bead section
+    boundBox bead(boundBox::invertedBox);
+    forAll(V, celli)
+    {
+        const boundBox& bb = cellBounds_[celli];
+        const point c = bb.centre();
+        if
+        (
+            alpha[celli] >= metalThreshold_
+         && c.z() >= surfaceHeight_
+         && slice(c.x()) == beadSlice
+        )
+        {
+            bead.add(bb);
+        }
+    }
+    reduce(bead.min(), minOp<point>());
+    reduce(bead.max(), maxOp<point>());
+
+    if (bead.valid())
+    {
+        m.beadWidth = bead.span().y();
+        m.beadHeight = bead.max().z() - surfaceHeight_;
+    }
+
+    const scalar depositedArea = m.fusedArea + m.beadArea;
+    if (depositedArea > 0)
+    {
+        m.dilution = m.fusedArea/depositedArea;
+    }
+
+    return m;
+}
+
+
+void Foam::functionObjects::meltPoolMetrics::writeFileHeader(Ostream& os)
+{
+    if (writtenHeader_)
+    {
+        return;
+    }
+
+    writeHeader(os, "Melt pool and bead metrics");
+    writeHeaderValue(os, "fusion temperature [K]", fusionTemperature_);
+    writeHeaderValue(os, "surface height [m]", surfaceHeight_);
+    writeHeaderValue(os, "slice length [m]", sliceLength_);
+    writeCommented(os, "Time");
+    for
+    (
+        const char* column :
+        {
+            "poolLength", "poolWidth", "penetration", "poolVolume",
+            "beadWidth", "beadHeight", "beadArea", "fusedArea", "dilution",
+            "peakTemperature", "beadSection"
+        }
+    )
+    {
+        writeTabbed(os, column);
+    }
+    os  << endl;
+
+    writtenHeader_ = true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::meltPoolMetrics::meltPoolMetrics
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    surfaceHeight_(0),
+    fusionTemperature_(0),
+    metalThreshold_(0.5),
+    fixedBeadSection_(false),
+    beadSection_(0),
+    sliceOrigin_(0),
+    sliceLength_(1),
+    nSlices_(1)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::meltPoolMetrics::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+    readCoeffs(dict);
+    calcCellBounds();
+
+    return true;
+}
+
+
+bool Foam::functionObjects::meltPoolMetrics::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::meltPoolMetrics::write()
+{
+    const metrics m = calculate();
+
+    Log << type() << " " << name() << ": pool length " << m.poolLength
+        << " m, width " << m.poolWidth << " m, penetration " << m.penetration
+        << " m; bead width " << m.beadWidth << " m, height " << m.beadHeight
+        << " m, dilution " << m.dilution << "; peak T " << m.peakTemperature
+        << " K" << endl;
+
+    if (writeToFile())
+    {
+        writeFileHeader(file());
+        writeCurrentTime(file());
+        for
+        (
+            const scalar value :
+            {
+                m.poolLength, m.poolWidth, m.penetration, m.poolVolume,
+                m.beadWidth, m.beadHeight, m.beadArea, m.fusedArea,
+                m.dilution, m.peakTemperature, m.beadSection
+            }
+        )
+        {
+            file() << tab << value;
+        }
+        file() << endl;
+    }
+
+    return true;
+}
+
+
+void Foam::functionObjects::meltPoolMetrics::updateMesh(const mapPolyMesh&)
+{
+    calcCellBounds();
+}
+
+
+void Foam::functionObjects::meltPoolMetrics::movePoints(const polyMesh&)
+{
+    calcCellBounds();
+}
+
+
+// ************************************************************************* //

@@ -46,7 +46,7 @@ def test_serial_and_parallel_runs_agree(ldna_case: Path, tmp_path: Path) -> None
     set_entry(serial / "system" / "controlDict", "writeInterval", END_TIME)
     set_entry(serial / "system" / "controlDict", "writePrecision", "14")
     tighten_solvers(serial)
-    for tool in ("blockMesh", "topoSet", "setFields"):
+    for tool in ("blockMesh", "setFields"):
         run(serial, tool)
     parallel = Path(shutil.copytree(serial, tmp_path / "parallel"))
 

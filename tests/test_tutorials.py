@@ -1,8 +1,10 @@
-"""Second tier: every tutorial runs to its end (smoke test).
+"""Second tier: every tutorial's Allrun, shortened to a few time steps.
 
-Each tutorial is copied to a temporary directory and its Allrun executed;
-the solver must finish every run without a fatal error and with bounded
-fields.  Physics is asserted by the first-tier tests.
+Each tutorial is copied to a temporary directory, its end time set to a few
+initial time steps (the OpenFOAM way: in the copy's system/controlDict), and
+its Allrun executed; the solver must finish without a fatal error and with
+bounded fields.  The main LDNA scene also runs its Allrun-parallel.  Physics
+is asserted by the first-tier tests.
 """
 from __future__ import annotations
 
@@ -13,31 +15,77 @@ import pytest
 
 from ldna.foamcase import PROJECT_DIR, alpha_bounds, read_balances, run
 
+#: Time steps of a shortened tutorial (at the initial step size)
+SMOKE_STEPS = 10
+
 #: Known failures, each with what was measured (strict: a fix makes the test
 #: fail until the entry is removed); empty while every scene stays in bounds
 KNOWN_FAILURES: dict[str, str] = {}
 
-TUTORIALS = [
-    pytest.param(path, id=path.name,
-                 marks=[pytest.mark.xfail(strict=True, reason=KNOWN_FAILURES[path.name])]
-                 if path.name in KNOWN_FAILURES else [])
-    for path in sorted(p.parent for p in (PROJECT_DIR / "tutorials").glob("*/Allrun"))
-]
+TUTORIAL_DIRS = sorted(p.parent for p in (PROJECT_DIR / "tutorials").glob("*/Allrun"))
 
 
-@pytest.mark.parametrize("tutorial", TUTORIALS)
-def test_tutorial_runs(tutorial: Path, tmp_path: Path) -> None:
-    case = Path(shutil.copytree(tutorial, tmp_path / tutorial.name))
-    run(case, "./Allrun", log_name="Allrun")
+def tutorial_params(script: str, names: list[str] | None = None) -> list:
+    """pytest parameters: the tutorials (optionally only ``names``) that have ``script``."""
+    return [
+        pytest.param(path, id=path.name,
+                     marks=[pytest.mark.xfail(strict=True, reason=KNOWN_FAILURES[path.name])]
+                     if path.name in KNOWN_FAILURES else [])
+        for path in TUTORIAL_DIRS
+        if (path / script).exists() and (names is None or path.name in names)
+    ]
+
+
+def shorten(tutorial: Path, steps: int) -> None:
+    """End the tutorial after ``steps`` initial time steps and write then.
+
+    A tutorial without its own controlDict takes the template's, so the
+    shortened copy of that is put in its system/ folder.
+    """
+    control = tutorial / "system" / "controlDict"
+    if not control.exists():
+        control.parent.mkdir(exist_ok=True)
+        shutil.copy(PROJECT_DIR / "cases" / "ldna" / "system" / "controlDict", control)
+    delta_t = float(run(tutorial, "foamDictionary -entry deltaT -value system/controlDict",
+                        log_name="foamDictionary.deltaT").output.split()[-1])
+    end_time = f"{steps * delta_t:g}"
+    for entry in ("endTime", "writeInterval"):
+        run(tutorial, f"foamDictionary -entry {entry} -set {end_time} system/controlDict",
+            log_name=f"foamDictionary.{entry}")
+
+
+def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:
+    """Run the shortened copy of ``tutorial`` with ``script`` and check its logs."""
+    case = Path(shutil.copytree(tutorial, tmp_path / tutorial.name,
+                                ignore=shutil.ignore_patterns("run")))
+    shorten(case, SMOKE_STEPS)
+    run(case, f"./{script}", log_name=script)
     for log in case.rglob("log.*"):
         assert "FOAM FATAL" not in log.read_text(errors="replace"), log.name
     solver_logs = list(case.rglob("log.ldnaFoam"))
     assert len(solver_logs) == 1, "a tutorial runs ldnaFoam once"
     solver_log = solver_logs[0]
-    assert solver_log.read_text().rstrip().endswith("Finalising parallel run") or \
-        "\nEnd\n" in solver_log.read_text()
+    text = solver_log.read_text()
+    assert text.rstrip().endswith("Finalising parallel run") or "\nEnd\n" in text
     balances = read_balances(solver_log)
     assert len(balances) > 1
     assert balances["T_min"].min() > 0
     low, high = alpha_bounds(solver_log)
     assert low > -1e-6 and high < 1 + 1e-6
+
+
+@pytest.mark.parametrize("tutorial", tutorial_params("Allrun"))
+def test_tutorial_runs(tutorial: Path, tmp_path: Path) -> None:
+    run_shortened(tutorial, tmp_path, "Allrun")
+
+
+@pytest.mark.parametrize("tutorial", tutorial_params("Allrun-parallel", ["ldna"]))
+def test_tutorial_runs_in_parallel(tutorial: Path, tmp_path: Path) -> None:
+    run_shortened(tutorial, tmp_path, "Allrun-parallel")
+    assert (tmp_path / tutorial.name / "run" / "processor1").is_dir()
+
+
+def test_every_tutorial_has_its_scripts() -> None:
+    for tutorial in TUTORIAL_DIRS:
+        for script in ("Allrun", "Allrun-parallel", "Allclean"):
+            assert (tutorial / script).exists(), f"{tutorial.name}/{script}"

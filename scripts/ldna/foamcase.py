@@ -109,6 +109,21 @@ def read_internal_field(path: Path) -> np.ndarray:
     raise ValueError(f"{path}: no internalField found (binary format?)")
 
 
+def write_internal_field(path: Path, values: np.ndarray) -> None:
+    """Replace the internalField of an ASCII scalar field file by cell ``values``.
+
+    The boundary conditions of the file stay as they are.
+    """
+    path = Path(path)
+    text = path.read_text()
+    body = "\n".join(f"{value:.12g}" for value in np.asarray(values, dtype=float))
+    field = f"internalField   nonuniform List<scalar> {len(values)}\n(\n{body}\n);"
+    text, count = re.subn(r"internalField\s+uniform\s+[^;]+;", lambda _: field, text, count=1)
+    if count != 1:
+        raise ValueError(f"{path}: no uniform internalField to replace")
+    path.write_text(text)
+
+
 _BALANCE = re.compile(
     r"^Balance at t = (\S+): metal mass = (\S+) kg, total enthalpy = (\S+) J, "
     r"min/max T = (\S+) / (\S+) K, liquid metal volume = (\S+) m3",

@@ -39,3 +39,67 @@ def set_entry(path: Path, keyword: str, value: str) -> None:
     if count != 1:
         raise KeyError(f"entry '{keyword}' not found in {path}")
     path.write_text(new_text)
+
+
+def _top_level_blocks(text: str) -> list[tuple[str, int, int]]:
+    """Return (name, start, end) of each top-level ``name { ... }`` block.
+
+    ``start`` is the beginning of the line holding the name and ``end`` is
+    just after the closing brace.  Comments are skipped when counting braces.
+    """
+    blocks: list[tuple[str, int, int]] = []
+    depth = 0
+    i = 0
+    opened: tuple[str, int] | None = None
+    # A block's name stands alone on its line, or before the brace on it
+    head = re.compile(r"(?:^|\n)[ \t]*([A-Za-z_][A-Za-z0-9_.]*)\s*$")
+    while i < len(text):
+        if text.startswith("//", i):
+            end = text.find("\n", i)
+            i = len(text) if end < 0 else end
+            continue
+        if text.startswith("/*", i):
+            i = text.find("*/", i) + 2
+            continue
+        char = text[i]
+        if char == "{":
+            if depth == 0:
+                match = head.search(text, 0, i)
+                opened = (match.group(1), text.rfind("\n", 0, match.start(1)) + 1) \
+                    if match else None
+            depth += 1
+        elif char == "}":
+            depth -= 1
+            if depth == 0 and opened is not None:
+                blocks.append((opened[0], opened[1], i + 1))
+                opened = None
+        i += 1
+    return blocks
+
+
+def block_names(path: Path) -> list[str]:
+    """Return the names of the top-level sub-dictionaries of a file."""
+    return [name for name, _, _ in _top_level_blocks(Path(path).read_text())
+            if name != "FoamFile"]
+
+
+def remove_blocks(path: Path, names: list[str]) -> None:
+    """Remove top-level sub-dictionaries by name, leaving the rest as written.
+
+    Unlike ``foamDictionary -remove``, this keeps ``#include`` and ``#eval``
+    lines as they are (foamDictionary writes the expanded dictionary).
+    """
+    path = Path(path)
+    text = path.read_text()
+    blocks = {name: (start, end) for name, start, end in _top_level_blocks(text)}
+    missing = [name for name in names if name not in blocks]
+    if missing:
+        raise KeyError(f"no sub-dictionary {missing} in {path}")
+    for start, end in sorted((blocks[name] for name in names), reverse=True):
+        text = text[:start] + text[end:].lstrip("\n")
+    path.write_text(text)
+
+
+def keep_blocks(path: Path, names: list[str]) -> None:
+    """Keep only the named top-level sub-dictionaries (and FoamFile)."""
+    remove_blocks(path, [name for name in block_names(path) if name not in names])

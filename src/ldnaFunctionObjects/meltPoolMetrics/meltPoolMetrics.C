@@ -19,6 +19,11 @@ namespace functionObjects
 }
 
 
+// Relative difference of two slice areas taken as round-off: the bead of a
+// uniform cross-section has equal areas in all its slices
+static const Foam::scalar sliceAreaTolerance = 1e-6;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 namespace
@@ -237,11 +242,25 @@ Foam::functionObjects::meltPoolMetrics::calculate() const
     }
     m.fusedArea = max(fusedArea);
 
-    // The bead section: given, or the slice of largest bead area
-    const label beadSlice =
-        fixedBeadSection_
-      ? slice(beadSection_)
-      : findMax(beadArea);
+    // The bead section: given, or the slice of largest bead area; of slices
+    // equal to round-off (a uniform bead) the most downstream one
+    label beadSlice = nSlices_ - 1;
+    if (fixedBeadSection_)
+    {
+        beadSlice = slice(beadSection_);
+    }
+    else
+    {
+        const scalar largest = max(beadArea);
+        while
+        (
+            beadSlice > 0
+         && beadArea[beadSlice] < (1 - sliceAreaTolerance)*largest
+        )
+        {
+            --beadSlice;
+        }
+    }
     m.beadSection = sliceOrigin_ + (beadSlice + 0.5)*sliceLength_;
     m.beadArea = beadArea[beadSlice];
 

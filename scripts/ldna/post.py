@@ -1,0 +1,316 @@
+"""Pictures and bead metrics of an ldnaFoam case (``ldna post``).
+
+Reads a case (reconstructed or decomposed) with pyvista and
+
+- computes the bead and melt-pool metrics with the definitions of the
+  ``meltPoolMetrics`` function object (src/ldnaFunctionObjects): pool length
+  and width, penetration, pool volume, bead width and height, bead and fused
+  areas, dilution, peak metal temperature;
+- renders, without a display, the pictures a welding engineer looks at:
+  the free surface (alpha = 0.5) coloured by temperature, a transverse
+  section through the pool's largest section with the fusion line, and a
+  longitudinal section along the weld's centre line.
+
+The weld frame is the template's: x along the weld (the substrate moves to
++x), y across it, z up, the substrate surface at z = surface_height.
+"""
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+#: Metal fraction from which a cell counts as metal (meltPoolMetrics default)
+METAL_THRESHOLD = 0.5
+#: Relative difference of two slice areas taken as round-off (meltPoolMetrics)
+SLICE_AREA_TOLERANCE = 1e-6
+#: Picture size [pixels]
+WINDOW_SIZE = (1200, 800)
+
+
+@dataclass
+class BeadMetrics:
+    """Bead and melt-pool metrics of one time, SI units (m, m2, m3, K)."""
+
+    pool_length: float = 0.0
+    pool_width: float = 0.0
+    penetration: float = 0.0
+    pool_volume: float = 0.0
+    bead_width: float = 0.0
+    bead_height: float = 0.0
+    bead_area: float = 0.0
+    fused_area: float = 0.0
+    dilution: float = 0.0
+    peak_temperature: float = 0.0
+    bead_section: float = 0.0
+
+    #: Column order of meltPoolMetrics.dat after the time
+    FUNCTION_OBJECT_COLUMNS = (
+        "pool_length", "pool_width", "penetration", "pool_volume", "bead_width",
+        "bead_height", "bead_area", "fused_area", "dilution", "peak_temperature",
+        "bead_section",
+    )
+
+    def as_dict(self) -> dict[str, float]:
+        """The metrics by name."""
+        return asdict(self)
+
+
+def _dictionary_scalar(path: Path, keyword: str) -> float | None:
+    """A ``keyword value;`` anywhere in a dictionary file or its #include files."""
+    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", path.read_text(), flags=re.S)
+    match = re.search(rf"\b{keyword}\s+([-+0-9.eE]+)\s*;", text)
+    if match:
+        return float(match.group(1))
+    for include in re.findall(r'#include\s+"([^"$]+)"', text):
+        value = _dictionary_scalar(path.parent / include, keyword)
+        if value is not None:
+            return value
+    return None
+
+
+def fusion_temperature(case: Path) -> float:
+    """(solidus + liquidus)/2 of the case's constant/thermophysicalProperties [K]."""
+    properties = Path(case) / "constant" / "thermophysicalProperties"
+    solidus = _dictionary_scalar(properties, "solidus")
+    liquidus = _dictionary_scalar(properties, "liquidus")
+    if solidus is None or liquidus is None:
+        raise ValueError(f"no metal solidus and liquidus in {properties}")
+    return 0.5 * (solidus + liquidus)
+
+
+def read_case(case: Path, time: float | None = None):
+    """The internal mesh of ``case`` at ``time`` (default: latest) as a pyvista grid.
+
+    Cell data holds the fields, point data their interpolation (for contours).
+    A decomposed case without reconstructed times is read from its processors.
+    """
+    import pyvista as pv
+
+    case = Path(case)
+    foam_file = case / f"{case.name}.foam"
+    foam_file.touch()
+    reader = pv.POpenFOAMReader(str(foam_file))
+    reader.skip_zero_time = False
+    if len(reader.time_values) <= 1 and (case / "processor0").is_dir():
+        reader.case_type = "decomposed"
+    times = reader.time_values
+    reader.set_active_time_value(times[-1] if time is None else
+                                 min(times, key=lambda t: abs(t - time)))
+    reader.cell_to_point_creation = True
+    reader.disable_all_patch_arrays()
+    reader.enable_patch_array("internalMesh")
+    grid = reader.read()["internalMesh"]
+    grid.field_data["time"] = np.array([reader.active_time_value])
+    return grid
+
+
+def _cell_frame_bounds(grid, axes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per-cell minimum and maximum of the point coordinates in the weld frame."""
+    frame_points = np.asarray(grid.points) @ axes.T
+    connectivity = np.asarray(grid.cell_connectivity)
+    offsets = np.asarray(grid.cell_offsets)
+    starts = offsets[:-1]
+    lows = np.minimum.reduceat(frame_points[connectivity], starts, axis=0)
+    highs = np.maximum.reduceat(frame_points[connectivity], starts, axis=0)
+    return lows, highs
+
+
+def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
+            bead_section: float | None = None,
+            metal_threshold: float = METAL_THRESHOLD) -> BeadMetrics:
+    """Bead and melt-pool metrics of a grid with cell fields T and alpha.metal.
+
+    The definitions are those of the meltPoolMetrics function object (see its
+    header): extents from the cells' bounding boxes, transverse slices one
+    shortest cell long along the weld, fused area the largest molten area
+    below the surface in any slice, bead measured in the slice of largest
+    bead area unless ``bead_section`` [m] is given.
+    """
+    axes = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    low, high = _cell_frame_bounds(grid, axes)
+    centre = 0.5 * (low + high)
+    span = high - low
+    volume = np.asarray(grid.compute_cell_sizes(length=False, area=False)["Volume"])
+    temperature = np.asarray(grid.cell_data["T"])
+    alpha = np.asarray(grid.cell_data["alpha.metal"])
+
+    slice_length = span[:, 0].min()
+    origin = low[:, 0].min()
+    n_slices = max(1, int(np.ceil((high[:, 0].max() - origin) / slice_length - 1e-12)))
+
+    def slice_of(w: np.ndarray) -> np.ndarray:
+        return np.clip(np.floor((w - origin) / slice_length).astype(int), 0, n_slices - 1)
+
+    slices = slice_of(centre[:, 0])
+    slice_area = volume / span[:, 0]
+    is_metal = alpha >= metal_threshold
+    molten = is_metal & (temperature >= fusion_temperature_)
+    below = centre[:, 2] < surface_height
+
+    result = BeadMetrics()
+    if is_metal.any():
+        result.peak_temperature = float(temperature[is_metal].max())
+    if molten.any():
+        result.pool_length = float(high[molten, 0].max() - low[molten, 0].min())
+        result.pool_width = float(high[molten, 1].max() - low[molten, 1].min())
+        result.pool_volume = float((alpha * volume)[molten].sum())
+    if (molten & below).any():
+        result.penetration = float(surface_height - low[molten & below, 2].min())
+
+    fused = np.bincount(slices[molten & below], weights=slice_area[molten & below],
+                        minlength=n_slices)
+    bead = np.bincount(slices[~below], weights=(alpha * slice_area)[~below],
+                       minlength=n_slices)
+    result.fused_area = float(fused.max())
+    if bead_section is not None:
+        bead_slice = int(slice_of(np.array([bead_section]))[0])
+    else:
+        # Of slices equal to round-off (a uniform bead), the most downstream
+        bead_slice = int(np.nonzero(bead >= (1 - SLICE_AREA_TOLERANCE) * bead.max())[0][-1])
+    result.bead_section = float(origin + (bead_slice + 0.5) * slice_length)
+    result.bead_area = float(bead[bead_slice])
+
+    in_bead = is_metal & ~below & (slices == bead_slice)
+    if in_bead.any():
+        result.bead_width = float(high[in_bead, 1].max() - low[in_bead, 1].min())
+        result.bead_height = float(high[in_bead, 2].max() - surface_height)
+    if result.fused_area + result.bead_area > 0:
+        result.dilution = result.fused_area / (result.fused_area + result.bead_area)
+    return result
+
+
+def largest_fused_section(grid, fusion_temperature_: float, surface_height: float = 0.0) -> float:
+    """Position along the weld of the pool's largest section below the surface [m]."""
+    centres = np.asarray(grid.cell_centers().points)
+    temperature = np.asarray(grid.cell_data["T"])
+    alpha = np.asarray(grid.cell_data["alpha.metal"])
+    molten = (alpha >= METAL_THRESHOLD) & (temperature >= fusion_temperature_) \
+        & (centres[:, 2] < surface_height)
+    if not molten.any():
+        return float(np.median(centres[:, 0]))
+    positions, counts = np.unique(np.round(centres[molten, 0], 9), return_counts=True)
+    return float(positions[np.argmax(counts)])
+
+
+def _plotter():
+    """An off-screen plotter that needs no display."""
+    if not os.environ.get("DISPLAY"):
+        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    import pyvista as pv
+
+    plotter = pv.Plotter(off_screen=True, window_size=WINDOW_SIZE)
+    plotter.set_background("white")
+    return plotter
+
+
+def _temperature_bar(title: str = "T [K]") -> dict:
+    return {"title": title, "color": "black", "vertical": True}
+
+
+def render_surface(grid, path: Path, temperature_range: tuple[float, float]) -> Path:
+    """The free surface alpha.metal = 0.5 in 3D, coloured by temperature."""
+    surface = grid.contour([0.5], scalars="alpha.metal", preference="point")
+    plotter = _plotter()
+    plotter.add_mesh(grid.outline(), color="grey")
+    if surface.n_points:
+        surface = surface.sample(grid) if "T" not in surface.point_data else surface
+        plotter.add_mesh(surface, scalars="T", cmap="inferno", clim=temperature_range,
+                         scalar_bar_args=_temperature_bar())
+    plotter.add_text(f"Free surface, t = {grid.field_data['time'][0]:.4g} s",
+                     color="black", font_size=12)
+    plotter.view_isometric()
+    plotter.camera.azimuth = -30
+    plotter.screenshot(str(path))
+    plotter.close()
+    return path
+
+
+def render_section(grid, path: Path, normal: str, origin: tuple[float, float, float],
+                   fusion_temperature_: float, temperature_range: tuple[float, float],
+                   title: str) -> Path:
+    """A plane section coloured by temperature, with the fusion line and free surface."""
+    section = grid.slice(normal=normal, origin=origin)
+    plotter = _plotter()
+    plotter.add_mesh(section, scalars="T", cmap="inferno", clim=temperature_range,
+                     preference="cell", scalar_bar_args=_temperature_bar())
+    fusion_line = section.contour([fusion_temperature_], scalars="T", preference="point")
+    free_surface = section.contour([0.5], scalars="alpha.metal", preference="point")
+    if fusion_line.n_points:
+        plotter.add_mesh(fusion_line, color="cyan", line_width=4, label="fusion line")
+    if free_surface.n_points:
+        plotter.add_mesh(free_surface, color="white", line_width=3, label="free surface")
+    if fusion_line.n_points or free_surface.n_points:
+        plotter.add_legend(bcolor="grey", size=(0.18, 0.1))
+    plotter.add_text(title, color="black", font_size=12)
+    if normal == "x":
+        plotter.view_yz()
+    else:
+        plotter.view_xz()
+    plotter.screenshot(str(path))
+    plotter.close()
+    return path
+
+
+def post_process(case: Path, output: Path | None = None, time: float | None = None,
+                 surface_height: float = 0.0, bead_section: float | None = None,
+                 fusion_temperature_: float | None = None) -> tuple[BeadMetrics, list[Path]]:
+    """Metrics and pictures of ``case`` at ``time``; PNGs and metrics.csv in ``output``."""
+    case = Path(case)
+    output = Path(output or case / "pictures")
+    output.mkdir(parents=True, exist_ok=True)
+    grid = read_case(case, time)
+    t_fusion = fusion_temperature_ or fusion_temperature(case)
+    result = metrics(grid, t_fusion, surface_height, bead_section)
+
+    temperature = np.asarray(grid.cell_data["T"])
+    temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))
+    x_section = largest_fused_section(grid, t_fusion, surface_height)
+    centre = grid.center
+    time_label = f"t = {grid.field_data['time'][0]:.4g} s"
+    pictures = [
+        render_surface(grid, output / "surface.png", temperature_range),
+        render_section(grid, output / "transverse.png", "x", (x_section, centre[1], centre[2]),
+                       t_fusion, temperature_range,
+                       f"Transverse section x = {1e3 * x_section:.2f} mm, {time_label}"),
+        render_section(grid, output / "longitudinal.png", "y", (centre[0], 0.0, centre[2]),
+                       t_fusion, temperature_range,
+                       f"Longitudinal section y = 0, {time_label}"),
+    ]
+    with open(output / "metrics.csv", "w", encoding="utf-8") as stream:
+        values = result.as_dict()
+        stream.write("time," + ",".join(values) + "\n")
+        stream.write(f"{grid.field_data['time'][0]:.9g}," +
+                     ",".join(f"{v:.9g}" for v in values.values()) + "\n")
+    return result, pictures
+
+
+def read_function_object_metrics(case: Path, name: str = "meltPoolMetrics") -> np.ndarray:
+    """Rows (time, metrics...) of postProcessing/<name>/*/meltPoolMetrics.dat, by time."""
+    rows = []
+    for data in sorted((Path(case) / "postProcessing" / name).glob("*/meltPoolMetrics.dat")):
+        rows.append(np.loadtxt(data, comments="#", ndmin=2))
+    if not rows:
+        raise FileNotFoundError(f"no postProcessing/{name}/*/meltPoolMetrics.dat in {case}")
+    table = np.vstack(rows)
+    return table[np.argsort(table[:, 0], kind="stable")]
+
+
+def format_metrics(result: BeadMetrics) -> str:
+    """The metrics as a welding engineer reads them (mm, mm2, %)."""
+    return "\n".join([
+        f"pool length      {1e3 * result.pool_length:8.2f} mm",
+        f"pool width       {1e3 * result.pool_width:8.2f} mm",
+        f"penetration      {1e3 * result.penetration:8.2f} mm",
+        f"pool volume      {1e9 * result.pool_volume:8.2f} mm3",
+        f"bead width       {1e3 * result.bead_width:8.2f} mm",
+        f"bead height      {1e3 * result.bead_height:8.2f} mm",
+        f"bead area        {1e6 * result.bead_area:8.2f} mm2",
+        f"fused area       {1e6 * result.fused_area:8.2f} mm2",
+        f"dilution         {100 * result.dilution:8.2f} %",
+        f"peak metal T     {result.peak_temperature:8.1f} K",
+        f"bead section x   {1e3 * result.bead_section:8.2f} mm",
+    ])

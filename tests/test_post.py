@@ -1,0 +1,196 @@
+"""Bead and melt-pool metrics: the meltPoolMetrics function object and ``ldna post``.
+
+A synthetic case prescribes a half-ellipsoid pool below the substrate surface
+and a half-elliptic bead on it; both the function object (serial and on two
+MPI ranks, through OpenFOAM's postProcess) and ``ldna post`` must recover
+the prescribed sizes within one cell, and agree with each other.  ``ldna
+post`` must also render its pictures without a display, and agree with the
+function object on a real run of the LDNA template.
+"""
+from __future__ import annotations
+
+import math
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conftest import prepare_test_case
+from ldna.foamcase import read_internal_field, run, run_parallel, write_internal_field
+from ldna.foamdict import set_entry
+from ldna.post import (BeadMetrics, fusion_temperature, metrics, post_process, read_case,
+                       read_function_object_metrics)
+
+#: Cell size of the synthetic case [m] (tests/cases/syntheticPool)
+CELL = 0.5e-3
+#: Prescribed pool: half-ellipsoid below z = 0 centred at POOL_CENTRE, semi-axes [m]
+POOL_CENTRE = (10e-3, 0.0)
+POOL_SEMI_AXES = (4.1e-3, 3.1e-3, 2.1e-3)
+#: Prescribed bead: half-elliptic cylinder on z = 0 from x = BEAD_START on, semi-axes [m]
+BEAD_START = 8e-3
+BEAD_HALF_WIDTH = 2.6e-3
+BEAD_HEIGHT = 1.6e-3
+#: Temperatures of the prescribed fields [K]: molten pool, cold elsewhere
+POOL_TEMPERATURE = 2000.0
+COLD_TEMPERATURE = 300.0
+#: Preset liquid pool of the run (template coordinates [m]) and its temperature [K]
+PRESET_POOL_BOX = "(0.008 -0.004 -0.003) (0.022 0.004 0)"
+PRESET_POOL_TEMPERATURE = 2000.0
+#: Largest relative difference between the function object and ldna post:
+#: the same definitions, fields written with 12 digits, but VTK's OpenFOAM
+#: reader gives the mesh points in single precision (6e-8 relative), which
+#: the slice length, a difference of two coordinates, amplifies
+AGREEMENT = 1e-5
+
+
+def prescribed_fields(centres: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Temperature and metal fraction of the prescribed pool and bead at cell centres."""
+    x, y, z = centres.T
+    a, b, c = POOL_SEMI_AXES
+    in_pool = (z < 0) & (((x - POOL_CENTRE[0]) / a) ** 2 + ((y - POOL_CENTRE[1]) / b) ** 2
+                         + (z / c) ** 2 < 1)
+    in_bead = (z > 0) & (x > BEAD_START) & ((y / BEAD_HALF_WIDTH) ** 2
+                                            + (z / BEAD_HEIGHT) ** 2 < 1)
+    temperature = np.where(in_pool, POOL_TEMPERATURE, COLD_TEMPERATURE)
+    alpha = np.where((z < 0) | in_bead, 1.0, 0.0)
+    return temperature, alpha
+
+
+def expected_metrics() -> BeadMetrics:
+    """The prescribed shapes' metrics."""
+    a, b, c = POOL_SEMI_AXES
+    fused_area = math.pi * b * c / 2
+    bead_area = math.pi * BEAD_HALF_WIDTH * BEAD_HEIGHT / 2
+    return BeadMetrics(
+        pool_length=2 * a, pool_width=2 * b, penetration=c,
+        pool_volume=2 * math.pi * a * b * c / 3,
+        bead_width=2 * BEAD_HALF_WIDTH, bead_height=BEAD_HEIGHT,
+        bead_area=bead_area, fused_area=fused_area,
+        dilution=fused_area / (fused_area + bead_area),
+        peak_temperature=POOL_TEMPERATURE,
+    )
+
+
+def area_tolerance(semi_axis_1: float, semi_axis_2: float) -> float:
+    """Area a staircase of cells can miss on a half-ellipse: half a cell along its arc."""
+    arc = math.pi * math.sqrt((semi_axis_1 ** 2 + semi_axis_2 ** 2) / 2) / 2
+    return arc * CELL / 2 + 2 * semi_axis_1 * CELL / 2
+
+
+@pytest.fixture
+def synthetic_pool_case(tmp_path: Path) -> Path:
+    """The synthetic case, meshed, with the prescribed fields at time 0."""
+    case = prepare_test_case("syntheticPool", tmp_path, material_from_template=True)
+    run(case, "blockMesh")
+    run(case, "postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+    temperature, alpha = prescribed_fields(read_internal_field(case / "0" / "C"))
+    write_internal_field(case / "0" / "T", temperature)
+    write_internal_field(case / "0" / "alpha.metal", alpha)
+    return case
+
+
+def check_against_prescribed(result: BeadMetrics, label: str) -> None:
+    """Sizes within one cell, areas within the staircase error, of the prescribed shapes."""
+    expected = expected_metrics()
+    print(f"{label}: {result}")
+    for size in ("pool_length", "pool_width", "penetration", "bead_width", "bead_height"):
+        error = abs(getattr(result, size) - getattr(expected, size))
+        print(f"  {size}: {1e3 * getattr(result, size):.3f} mm against "
+              f"{1e3 * getattr(expected, size):.3f} mm")
+        assert error <= CELL, size
+    fused_tolerance = area_tolerance(POOL_SEMI_AXES[1], POOL_SEMI_AXES[2])
+    bead_tolerance = area_tolerance(BEAD_HALF_WIDTH, BEAD_HEIGHT)
+    print(f"  fused area {1e6 * result.fused_area:.3f} mm2 against "
+          f"{1e6 * expected.fused_area:.3f} (tolerance {1e6 * fused_tolerance:.3f})")
+    print(f"  bead area {1e6 * result.bead_area:.3f} mm2 against "
+          f"{1e6 * expected.bead_area:.3f} (tolerance {1e6 * bead_tolerance:.3f})")
+    assert abs(result.fused_area - expected.fused_area) <= fused_tolerance
+    assert abs(result.bead_area - expected.bead_area) <= bead_tolerance
+    low = (expected.fused_area - fused_tolerance) / (
+        expected.fused_area - fused_tolerance + expected.bead_area + bead_tolerance)
+    high = (expected.fused_area + fused_tolerance) / (
+        expected.fused_area + fused_tolerance + expected.bead_area - bead_tolerance)
+    print(f"  dilution {result.dilution:.4f} against {expected.dilution:.4f} "
+          f"(bounds {low:.4f}-{high:.4f})")
+    assert low <= result.dilution <= high
+    assert result.peak_temperature == pytest.approx(POOL_TEMPERATURE)
+
+
+def function_object_result(case: Path) -> BeadMetrics:
+    """The last row of the case's meltPoolMetrics.dat."""
+    row = read_function_object_metrics(case)[-1]
+    return BeadMetrics(**dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, row[1:])))
+
+
+def check_agreement(a: BeadMetrics, b: BeadMetrics) -> None:
+    """Two metric sets equal to AGREEMENT (relative to each metric's size)."""
+    for name, value in a.as_dict().items():
+        other = b.as_dict()[name]
+        assert abs(value - other) <= AGREEMENT * max(abs(value), abs(other), 1e-12), name
+
+
+def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Path, tmp_path: Path) -> None:
+    case = synthetic_pool_case
+    parallel = Path(shutil.copytree(case, tmp_path / "parallel"))
+
+    run(case, "postProcess -fields '(T alpha.metal)' -time 0", log_name="postProcess")
+    serial_result = function_object_result(case)
+    check_against_prescribed(serial_result, "function object, serial")
+
+    run(parallel, "decomposePar -time 0")
+    run_parallel(parallel, "postProcess -fields '(T alpha.metal)' -time 0", 2,
+                 log_name="postProcess")
+    parallel_result = function_object_result(parallel)
+    check_against_prescribed(parallel_result, "function object, 2 ranks")
+
+    post_result = metrics(read_case(case, 0.0), fusion_temperature(case))
+    check_against_prescribed(post_result, "ldna post")
+
+    check_agreement(serial_result, parallel_result)
+    check_agreement(serial_result, post_result)
+
+
+def test_post_writes_pictures_headless(synthetic_pool_case: Path) -> None:
+    case = synthetic_pool_case
+    result, pictures = post_process(case, time=0.0)
+    assert [p.name for p in pictures] == ["surface.png", "transverse.png", "longitudinal.png"]
+    for picture in pictures:
+        data = picture.read_bytes()
+        assert data.startswith(b"\x89PNG"), picture
+        assert len(data) > 10_000, f"{picture.name}: {len(data)} bytes"
+    check_against_prescribed(result, "ldna post (pictures run)")
+    table = (case / "pictures" / "metrics.csv").read_text().splitlines()
+    assert len(table) == 2 and table[0].startswith("time,pool_length")
+
+
+def test_function_object_and_post_agree_on_a_run(ldna_case: Path) -> None:
+    """The LDNA template, run briefly: metrics written in the run and read by post agree."""
+    case = ldna_case
+    control = case / "system" / "controlDict"
+    end_time = "0.03"
+    set_entry(control, "endTime", end_time)
+    set_entry(control, "writeInterval", end_time)
+    set_entry(control, "writePrecision", "12")
+    for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
+        run(case, f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
+                  "system/controlDict", log_name="foamDictionary")
+    # A liquid pool under the droplets from the start, so that every metric is exercised
+    set_fields = case / "system" / "setFieldsDict"
+    set_fields.write_text(set_fields.read_text().replace("regions\n(", f"""regions
+(
+    boxToCell
+    {{
+        box {PRESET_POOL_BOX};
+        fieldValues (volScalarFieldValue T {PRESET_POOL_TEMPERATURE});
+    }}""", 1))
+    run(case, "blockMesh")
+    run(case, "setFields")
+    run(case, "ldnaFoam")
+
+    written = function_object_result(case)
+    computed = metrics(read_case(case), fusion_temperature(case))
+    print(f"function object: {written}\nldna post:       {computed}")
+    assert written.bead_area > 0, "the droplets have built some bead"
+    assert written.penetration > 0 and written.pool_length > 0, "the preset pool is still liquid"
+    check_agreement(written, computed)

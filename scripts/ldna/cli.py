@@ -20,6 +20,32 @@ def _bench_laser(args: argparse.Namespace) -> int:
     return 0
 
 
+def _study(args: argparse.Namespace) -> int:
+    from . import study
+
+    parameters = [study.Parameter.parse(text) for text in args.set]
+    members, table = study.run_study(Path(args.template), Path(args.study_dir), parameters,
+                                     end_time=args.end_time, n_procs=args.np)
+    failed = [m.name for m in members if m.status != "done"]
+    print(f"{len(members)} members, {len(failed)} failed; results: {table}")
+    if failed:
+        print("failed: " + ", ".join(failed) + " (see their log.Allrun and log.*)")
+    return 1 if failed else 0
+
+
+def _post(args: argparse.Namespace) -> int:
+    from . import post
+
+    result, pictures = post.post_process(Path(args.case), args.output, args.time,
+                                         surface_height=args.surface_height,
+                                         bead_section=args.bead_section,
+                                         fusion_temperature_=args.fusion_temperature)
+    print(post.format_metrics(result))
+    for picture in pictures:
+        print(picture)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``ldna`` argument parser with one sub-command per task."""
     parser = argparse.ArgumentParser(prog="ldna", description=__doc__)
@@ -39,6 +65,39 @@ def build_parser() -> argparse.ArgumentParser:
     bench_laser.add_argument("--level", type=int, default=1, help="mesh level (0..3)")
     bench_laser.add_argument("--steps", type=int, default=20, help="fixed time steps per run")
     bench_laser.set_defaults(func=_bench_laser)
+
+    study = commands.add_parser(
+        "study",
+        help="run a case template over a parameter grid and collect the bead metrics in a CSV",
+        description="Copy TEMPLATE into STUDY_DIR once per member of the grid of --set "
+                    "values, run each member's Allrun, collect STUDY_DIR/results.csv.",
+    )
+    study.add_argument("template", help="case template, e.g. cases/ldna")
+    study.add_argument("study_dir", help="folder of the study (members and results.csv)")
+    study.add_argument("--set", action="append", required=True, metavar="NAME=V1,V2,...",
+                       help="a grid axis: a caseParameters entry (laserPower, weldingSpeed, "
+                            "wireFeedSpeed, oscillationAmplitude, level, ...) or FILE:ENTRY "
+                            "(e.g. constant/fvOptions:laser/absorptionModel); repeat for more")
+    study.add_argument("--end-time", type=float, help="simulated time of every member [s]")
+    study.add_argument("--np", type=int, default=1, help="MPI ranks per member (1: serial)")
+    study.set_defaults(func=_study)
+
+    post = commands.add_parser(
+        "post",
+        help="bead metrics and PNG pictures (free surface, transverse and longitudinal "
+             "sections) of a case",
+    )
+    post.add_argument("case", nargs="?", default=".", help="case directory")
+    post.add_argument("--output", help="folder of the pictures [CASE/pictures]")
+    post.add_argument("--time", type=float, help="time to read [latest]")
+    post.add_argument("--surface-height", type=float, default=0.0,
+                      help="height of the substrate surface [m]")
+    post.add_argument("--bead-section", type=float,
+                      help="position along the weld of the bead section [m] "
+                           "[slice of largest bead area]")
+    post.add_argument("--fusion-temperature", type=float,
+                      help="isotherm of the fusion line [K] [(solidus+liquidus)/2]")
+    post.set_defaults(func=_post)
     return parser
 
 

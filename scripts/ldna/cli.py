@@ -20,6 +20,14 @@ def _bench_laser(args: argparse.Namespace) -> int:
     return 0
 
 
+def _gmsh_mesh(args: argparse.Namespace) -> int:
+    from . import gmsh_mesh
+
+    n_cells = gmsh_mesh.gmsh_mesh(Path(args.case), args.level)
+    print(f"{args.case}: {n_cells} hexahedra, constant/polyMesh written by gmshToFoam")
+    return 0
+
+
 def _study(args: argparse.Namespace) -> int:
     from . import study
 
@@ -65,6 +73,15 @@ def build_parser() -> argparse.ArgumentParser:
     bench_laser.add_argument("--level", type=int, default=1, help="mesh level (0..3)")
     bench_laser.add_argument("--steps", type=int, default=20, help="fixed time steps per run")
     bench_laser.set_defaults(func=_bench_laser)
+
+    gmsh = commands.add_parser(
+        "gmsh-mesh",
+        help="mesh an LDNA case with gmsh (hexahedra, refined band at the surface) "
+             "and gmshToFoam instead of blockMesh",
+    )
+    gmsh.add_argument("case", nargs="?", default=".", help="case directory")
+    gmsh.add_argument("--level", type=int, help="resolution level 0..3 [caseParameters]")
+    gmsh.set_defaults(func=_gmsh_mesh)
 
     study = commands.add_parser(
         "study",

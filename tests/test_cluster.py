@@ -1,0 +1,51 @@
+"""The cluster workflow of the template: its SLURM batch script and Allrun -parallel.
+
+Without a SLURM scheduler the batch script runs as SLURM would start it:
+with bash, in the submit directory, with SLURM_NTASKS set.  Both must
+decompose the case, run ldnaFoam on the ranks, reconstruct the fields and
+leave the bead metrics in postProcessing/.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from ldna.foamcase import run, time_directories
+from ldna.foamdict import set_entry
+from ldna.post import read_function_object_metrics
+
+#: Simulated time of the shortened scene [s] (some 20 steps at level 0)
+END_TIME = "0.005"
+N_RANKS = 2
+
+
+def shorten(case: Path) -> None:
+    """End the template's scene after END_TIME and write then."""
+    for entry in ("endTime", "writeInterval"):
+        set_entry(case / "system" / "controlDict", entry, END_TIME)
+
+
+def check_parallel_run(case: Path) -> None:
+    """Decomposed on N_RANKS, run to the end, reconstructed, metrics written."""
+    assert (case / f"processor{N_RANKS - 1}").is_dir()
+    assert not (case / f"processor{N_RANKS}").exists()
+    log = (case / "log.ldnaFoam").read_text()
+    assert "Finalising parallel run" in log and "FOAM FATAL" not in log
+    assert time_directories(case)[-1].name == END_TIME, "reconstructed end time"
+    assert len(read_function_object_metrics(case)) > 0
+
+
+def test_slurm_batch_script(ldna_case: Path) -> None:
+    case = ldna_case
+    shorten(case)
+    run(case, f"SLURM_NTASKS={N_RANKS} SLURM_SUBMIT_DIR={case} bash ldna.sbatch",
+        log_name="sbatch")
+    check_parallel_run(case)
+
+
+def test_template_allrun_parallel(ldna_case: Path) -> None:
+    case = ldna_case
+    shorten(case)
+    run(case, f"foamDictionary -entry numberOfSubdomains -set {N_RANKS} system/decomposeParDict",
+        log_name="foamDictionary")
+    run(case, "./Allrun -parallel", log_name="Allrun")
+    check_parallel_run(case)

@@ -8,7 +8,8 @@ Reads a case (reconstructed or decomposed) with pyvista and
   areas, dilution, peak metal temperature;
 - renders, without a display, the pictures a welding engineer looks at:
   the free surface (alpha = 0.5) coloured by temperature, a transverse
-  section through the pool's largest section with the fusion line, and a
+  section through the pool's largest section (without a pool: the bead
+  section) with the fusion line, and a
   longitudinal section along the weld's centre line.
 
 The weld frame is the template's: x along the weld (the substrate moves to
@@ -183,15 +184,19 @@ def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
     return result
 
 
-def largest_fused_section(grid, fusion_temperature_: float, surface_height: float = 0.0) -> float:
-    """Position along the weld of the pool's largest section below the surface [m]."""
+def largest_fused_section(grid, fusion_temperature_: float, surface_height: float = 0.0,
+                          default: float = 0.0) -> float:
+    """Position along the weld of the pool's largest section below the surface [m].
+
+    Without molten metal below the surface: ``default``.
+    """
     centres = np.asarray(grid.cell_centers().points)
     temperature = np.asarray(grid.cell_data["T"])
     alpha = np.asarray(grid.cell_data["alpha.metal"])
     molten = (alpha >= METAL_THRESHOLD) & (temperature >= fusion_temperature_) \
         & (centres[:, 2] < surface_height)
     if not molten.any():
-        return float(np.median(centres[:, 0]))
+        return default
     positions, counts = np.unique(np.round(centres[molten, 0], 9), return_counts=True)
     return float(positions[np.argmax(counts)])
 
@@ -237,14 +242,18 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
     plotter = _plotter()
     plotter.add_mesh(section, scalars="T", cmap="inferno", clim=temperature_range,
                      preference="cell", scalar_bar_args=_temperature_bar())
-    fusion_line = section.contour([fusion_temperature_], scalars="T", preference="point")
+    # The fusion line bounds molten metal: gas, however hot, is left out
+    metal_temperature = np.where(np.asarray(section.point_data["alpha.metal"]) >= METAL_THRESHOLD,
+                                 np.asarray(section.point_data["T"]), temperature_range[0])
+    section.point_data["metalT"] = metal_temperature
+    fusion_line = section.contour([fusion_temperature_], scalars="metalT", preference="point")
     free_surface = section.contour([0.5], scalars="alpha.metal", preference="point")
     if fusion_line.n_points:
         plotter.add_mesh(fusion_line, color="cyan", line_width=4, label="fusion line")
     if free_surface.n_points:
         plotter.add_mesh(free_surface, color="white", line_width=3, label="free surface")
     if fusion_line.n_points or free_surface.n_points:
-        plotter.add_legend(bcolor="grey", size=(0.18, 0.1))
+        plotter.add_legend(bcolor="grey", size=(0.2, 0.1), loc="lower left")
     plotter.add_text(title, color="black", font_size=12)
     if normal == "x":
         plotter.view_yz()
@@ -268,7 +277,7 @@ def post_process(case: Path, output: Path | None = None, time: float | None = No
 
     temperature = np.asarray(grid.cell_data["T"])
     temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))
-    x_section = largest_fused_section(grid, t_fusion, surface_height)
+    x_section = largest_fused_section(grid, t_fusion, surface_height, result.bead_section)
     centre = grid.center
     time_label = f"t = {grid.field_data['time'][0]:.4g} s"
     pictures = [

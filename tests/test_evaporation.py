@@ -208,7 +208,9 @@ def test_surface_at_4000_k_stays_bounded(laser_slab_case: Path) -> None:
     run(case, "setFields -dict system/setFieldsDict.hot", log_name="setFields.hot")
     properties = case / "constant" / "thermophysicalProperties"
     text = properties.read_text()
-    text = re.sub(r"^sigma\s+\S+;", "sigma { type sahooDebRoy; activity 0.03; }", text, flags=re.M)
+    text, count = re.subn(r"^sigma\s*(\{[^}]*\}|[^;{]+;)",
+                          "sigma { type sahooDebRoy; activity 0.03; }", text, flags=re.M)
+    assert count == 1, "the template's sigma entry changed: update this test"
     properties.write_text(text)
     write_fv_options(case, evaporation_entry("hertzKnudsen", "recoilPressure yes;") + """
 marangoni
@@ -228,7 +230,8 @@ marangoni
           f"{balances['T_max'].max():.1f}] K, evaporated "
           f"{evaporation_log(log)[-1][1]:.4e} kg")
     # Ran to the end time (to within half a time step)
-    assert balances["time"][-1] == pytest.approx(2e-3, rel=1e-3)
+    # Ran to the end: the last step may pass the end time (no write time there)
+    assert balances["time"][-1] >= 2e-3 * (1 - 1e-9)
     assert low > -1e-6 and high < 1 + 1e-6
     assert np.all(np.isfinite(temperature))
     assert balances["T_min"].min() > 200 and balances["T_max"].max() <= hot + 1e-6

@@ -25,6 +25,47 @@ const Foam::scalar Foam::metalGasMixture::Tref = 298.15;
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+bool Foam::metalGasMixture::readBoussinesq
+(
+    const dictionary& phaseDict,
+    const word& otherModel,
+    const word& defaultModel,
+    const word& referenceName,
+    const word& referenceUnit,
+    scalar& reference
+) const
+{
+    const word model
+    (
+        phaseDict.lookupOrDefault<word>("densityModel", defaultModel)
+    );
+    if (model != "Boussinesq" && model != otherModel)
+    {
+        FatalIOErrorInFunction(phaseDict)
+            << "Entry 'densityModel' must be Boussinesq or " << otherModel
+            << ", not " << model << exit(FatalIOError);
+    }
+
+    Info<< "    " << phaseDict.dictName() << " density: " << model;
+    if (model == "Boussinesq")
+    {
+        reference = phaseDict.get<scalar>(referenceName);
+        if (!(reference > 0))
+        {
+            FatalIOErrorInFunction(phaseDict)
+                << "Entry '" << referenceName << "' must be > 0 "
+                << referenceUnit << ", not " << reference
+                << exit(FatalIOError);
+        }
+        Info<< ", " << referenceName << " " << reference << " "
+            << referenceUnit << " for mass and inertia";
+    }
+    Info<< endl;
+
+    return model == "Boussinesq";
+}
+
+
 Foam::autoPtr<Foam::Function1<Foam::scalar>>
 Foam::metalGasMixture::readPositiveFunction
 (
@@ -77,33 +118,11 @@ void Foam::metalGasMixture::readCoeffs()
 
     const dictionary& metal = subDict(phase1Name());
 
-    const word densityModel
+    Boussinesq_ = readBoussinesq
     (
-        metal.lookupOrDefault<word>("densityModel", "Boussinesq")
+        metal, "variable", "Boussinesq", "referenceDensity", "kg/m3",
+        referenceDensity_
     );
-    if (densityModel != "Boussinesq" && densityModel != "variable")
-    {
-        FatalIOErrorInFunction(metal)
-            << "Entry 'densityModel' must be Boussinesq or variable, not "
-            << densityModel << exit(FatalIOError);
-    }
-    Boussinesq_ = densityModel == "Boussinesq";
-    if (Boussinesq_)
-    {
-        referenceDensity_ = metal.get<scalar>("referenceDensity");
-        if (!(referenceDensity_ > 0))
-        {
-            FatalIOErrorInFunction(metal)
-                << "Entry 'referenceDensity' must be > 0 kg/m3, not "
-                << referenceDensity_ << exit(FatalIOError);
-        }
-    }
-    Info<< "    metal density: " << densityModel;
-    if (Boussinesq_)
-    {
-        Info<< ", " << referenceDensity_ << " kg/m3 for mass and inertia";
-    }
-    Info<< endl;
 
     Tsolidus_ = metal.get<scalar>("solidus");
     Tliquidus_ = metal.get<scalar>("liquidus");
@@ -158,34 +177,11 @@ void Foam::metalGasMixture::readCoeffs()
             << "Entry 'R' (specific gas constant) must be > 0 J/kg/K, not "
             << Rgas_ << exit(FatalIOError);
     }
-    const word gasDensityModel
+    gasBoussinesq_ = readBoussinesq
     (
-        gas.lookupOrDefault<word>("densityModel", "idealGas")
+        gas, "idealGas", "idealGas", "referenceTemperature", "K",
+        gasReferenceTemperature_
     );
-    if (gasDensityModel != "idealGas" && gasDensityModel != "Boussinesq")
-    {
-        FatalIOErrorInFunction(gas)
-            << "Entry 'densityModel' must be idealGas or Boussinesq, not "
-            << gasDensityModel << exit(FatalIOError);
-    }
-    gasBoussinesq_ = gasDensityModel == "Boussinesq";
-    if (gasBoussinesq_)
-    {
-        gasReferenceTemperature_ = gas.get<scalar>("referenceTemperature");
-        if (!(gasReferenceTemperature_ > 0))
-        {
-            FatalIOErrorInFunction(gas)
-                << "Entry 'referenceTemperature' must be > 0 K, not "
-                << gasReferenceTemperature_ << exit(FatalIOError);
-        }
-    }
-    Info<< "    gas density: " << gasDensityModel;
-    if (gasBoussinesq_)
-    {
-        Info<< ", p/(R " << gasReferenceTemperature_
-            << " K) for mass and inertia";
-    }
-    Info<< endl;
 
     CpGas_ = readPositiveFunction(gas, "Cp", Tmin, Tmax);
     kappaGas_ = readPositiveFunction(gas, "kappa", Tmin, Tmax);

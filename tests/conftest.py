@@ -39,6 +39,8 @@ def prepare_test_case(name: str, destination: Path, material_from_template: bool
     for file in ("fvSchemes", "fvSolution"):
         shutil.copy(TEMPLATE / "system" / file, case / "system" / file)
     if material_from_template:
+        # A case whose constant/ would hold nothing else has none in git
+        (case / "constant").mkdir(exist_ok=True)
         shutil.copy(TEMPLATE / "constant" / "thermophysicalProperties",
                     case / "constant" / "thermophysicalProperties")
     return case

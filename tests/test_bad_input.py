@@ -49,6 +49,12 @@ BAD_INPUTS = [
     ("negative latent heat", THERMO, "metal/latentHeat", "-1", ["latentHeat", ">= 0"]),
     ("zero gas constant", THERMO, "gas/R", "0", ["'R'", "> 0"]),
     ("missing solidus", THERMO, "metal/solidus", None, ["solidus"]),
+    ("unknown gas density model", THERMO, "gas/densityModel", "perfectGas",
+     ["densityModel", "Boussinesq or idealGas", "perfectGas"]),
+    ("zero gas reference temperature", THERMO, "gas",
+     "{ R 208.13; densityModel Boussinesq; referenceTemperature 0; Cp constant 520.3; "
+     "kappa constant 0.0177; mu constant 2.27e-5; }",
+     ["referenceTemperature", "> 0"]),
     ("surface tension negative below 3200 K", THERMO, "sigma",
      "{ type linear; sigma0 0.3; dSigmadT -4.3e-4; Tref 1950; }",
      ["surface tension", "must be > 0", "3200"]),

@@ -18,11 +18,12 @@ The weld frame is the template's: x along the weld (the substrate moves to
 from __future__ import annotations
 
 import os
-import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
+
+from .material import Metal
 
 #: Metal fraction from which a cell counts as metal (meltPoolMetrics default)
 METAL_THRESHOLD = 0.5
@@ -47,12 +48,13 @@ class BeadMetrics:
     dilution: float = 0.0
     peak_temperature: float = 0.0
     bead_section: float = 0.0
+    fused_section: float = 0.0
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
         "pool_length", "pool_width", "penetration", "pool_volume", "bead_width",
         "bead_height", "bead_area", "fused_area", "dilution", "peak_temperature",
-        "bead_section",
+        "bead_section", "fused_section",
     )
 
     def as_dict(self) -> dict[str, float]:
@@ -60,27 +62,10 @@ class BeadMetrics:
         return asdict(self)
 
 
-def _dictionary_scalar(path: Path, keyword: str) -> float | None:
-    """A ``keyword value;`` anywhere in a dictionary file or its #include files."""
-    text = re.sub(r"//[^\n]*|/\*.*?\*/", "", path.read_text(), flags=re.S)
-    match = re.search(rf"\b{keyword}\s+([-+0-9.eE]+)\s*;", text)
-    if match:
-        return float(match.group(1))
-    for include in re.findall(r'#include\s+"([^"$]+)"', text):
-        value = _dictionary_scalar(path.parent / include, keyword)
-        if value is not None:
-            return value
-    return None
-
-
 def fusion_temperature(case: Path) -> float:
-    """(solidus + liquidus)/2 of the case's constant/thermophysicalProperties [K]."""
-    properties = Path(case) / "constant" / "thermophysicalProperties"
-    solidus = _dictionary_scalar(properties, "solidus")
-    liquidus = _dictionary_scalar(properties, "liquidus")
-    if solidus is None or liquidus is None:
-        raise ValueError(f"no metal solidus and liquidus in {properties}")
-    return 0.5 * (solidus + liquidus)
+    """(solidus + liquidus)/2 of the case's metal [K] (meltPoolMetrics' default)."""
+    metal = Metal.from_case(Path(case))
+    return 0.5 * (metal.solidus + metal.liquidus)
 
 
 def read_case(case: Path, time: float | None = None):
@@ -109,15 +94,20 @@ def read_case(case: Path, time: float | None = None):
     return grid
 
 
-def _cell_frame_bounds(grid, axes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per-cell minimum and maximum of the point coordinates in the weld frame."""
-    frame_points = np.asarray(grid.points) @ axes.T
+def _cell_bounds(grid) -> tuple[np.ndarray, np.ndarray]:
+    """Per-cell minimum and maximum of the point coordinates (the weld frame is x, y, z)."""
+    frame_points = np.asarray(grid.points, dtype=float)
     connectivity = np.asarray(grid.cell_connectivity)
     offsets = np.asarray(grid.cell_offsets)
     starts = offsets[:-1]
     lows = np.minimum.reduceat(frame_points[connectivity], starts, axis=0)
     highs = np.maximum.reduceat(frame_points[connectivity], starts, axis=0)
     return lows, highs
+
+
+def _largest_slice(areas: np.ndarray) -> int:
+    """The slice of largest area; of slices equal to round-off, the most downstream."""
+    return int(np.nonzero(areas >= (1 - SLICE_AREA_TOLERANCE) * areas.max())[0][-1])
 
 
 def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
@@ -128,11 +118,11 @@ def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
     The definitions are those of the meltPoolMetrics function object (see its
     header): extents from the cells' bounding boxes, transverse slices one
     shortest cell long along the weld, fused area the largest molten area
-    below the surface in any slice, bead measured in the slice of largest
-    bead area unless ``bead_section`` [m] is given.
+    below the surface in any slice (at ``fused_section``), bead measured in
+    the slice of largest bead area unless ``bead_section`` [m] is given; of
+    slices equal to round-off, the most downstream.
     """
-    axes = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
-    low, high = _cell_frame_bounds(grid, axes)
+    low, high = _cell_bounds(grid)
     centre = 0.5 * (low + high)
     span = high - low
     volume = np.asarray(grid.compute_cell_sizes(length=False, area=False)["Volume"])
@@ -167,11 +157,9 @@ def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
     bead = np.bincount(slices[~below], weights=(alpha * slice_area)[~below],
                        minlength=n_slices)
     result.fused_area = float(fused.max())
-    if bead_section is not None:
-        bead_slice = int(slice_of(np.array([bead_section]))[0])
-    else:
-        # Of slices equal to round-off (a uniform bead), the most downstream
-        bead_slice = int(np.nonzero(bead >= (1 - SLICE_AREA_TOLERANCE) * bead.max())[0][-1])
+    result.fused_section = float(origin + (_largest_slice(fused) + 0.5) * slice_length)
+    bead_slice = int(slice_of(np.array([bead_section]))[0]) if bead_section is not None \
+        else _largest_slice(bead)
     result.bead_section = float(origin + (bead_slice + 0.5) * slice_length)
     result.bead_area = float(bead[bead_slice])
 
@@ -182,23 +170,6 @@ def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
     if result.fused_area + result.bead_area > 0:
         result.dilution = result.fused_area / (result.fused_area + result.bead_area)
     return result
-
-
-def largest_fused_section(grid, fusion_temperature_: float, surface_height: float = 0.0,
-                          default: float = 0.0) -> float:
-    """Position along the weld of the pool's largest section below the surface [m].
-
-    Without molten metal below the surface: ``default``.
-    """
-    centres = np.asarray(grid.cell_centers().points)
-    temperature = np.asarray(grid.cell_data["T"])
-    alpha = np.asarray(grid.cell_data["alpha.metal"])
-    molten = (alpha >= METAL_THRESHOLD) & (temperature >= fusion_temperature_) \
-        & (centres[:, 2] < surface_height)
-    if not molten.any():
-        return default
-    positions, counts = np.unique(np.round(centres[molten, 0], 9), return_counts=True)
-    return float(positions[np.argmax(counts)])
 
 
 def _plotter():
@@ -222,7 +193,6 @@ def render_surface(grid, path: Path, temperature_range: tuple[float, float]) -> 
     plotter = _plotter()
     plotter.add_mesh(grid.outline(), color="grey")
     if surface.n_points:
-        surface = surface.sample(grid) if "T" not in surface.point_data else surface
         plotter.add_mesh(surface, scalars="T", cmap="inferno", clim=temperature_range,
                          scalar_bar_args=_temperature_bar())
     plotter.add_text(f"Free surface, t = {grid.field_data['time'][0]:.4g} s",
@@ -277,7 +247,7 @@ def post_process(case: Path, output: Path | None = None, time: float | None = No
 
     temperature = np.asarray(grid.cell_data["T"])
     temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))
-    x_section = largest_fused_section(grid, t_fusion, surface_height, result.bead_section)
+    x_section = result.fused_section if result.fused_area > 0 else result.bead_section
     centre = grid.center
     time_label = f"t = {grid.field_data['time'][0]:.4g} s"
     pictures = [
@@ -322,4 +292,5 @@ def format_metrics(result: BeadMetrics) -> str:
         f"dilution         {100 * result.dilution:8.2f} %",
         f"peak metal T     {result.peak_temperature:8.1f} K",
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
+        f"fused section x  {1e3 * result.fused_section:8.2f} mm",
     ])

@@ -152,9 +152,8 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
             time.sleep(POLL_SECONDS)
     member.wall_time = time.time() - begin
     solver_log = member.path / "log.ldnaFoam"
-    finished = solver_log.exists() and (
-        "\nEnd\n" in solver_log.read_text(errors="replace")
-        or "Finalising parallel run" in solver_log.read_text(errors="replace"))
+    log_text = solver_log.read_text(errors="replace") if solver_log.exists() else ""
+    finished = "\nEnd\n" in log_text or "Finalising parallel run" in log_text
     member.status = "done" if process.returncode == 0 and finished else "failed"
     if member.status == "done":
         row = read_function_object_metrics(member.path)[-1]

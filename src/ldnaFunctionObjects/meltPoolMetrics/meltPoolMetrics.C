@@ -68,30 +68,16 @@ Foam::vector readUnitDirection
 } // End anonymous namespace
 
 
-Foam::scalar
-Foam::functionObjects::meltPoolMetrics::fusionTemperatureFromProperties() const
-{
-    const IOdictionary properties(readThermophysicalProperties(mesh_));
-    const word metal = properties.get<wordList>("phases").first();
-    const dictionary& metalDict = properties.subDict(metal);
-
-    return 0.5*(metalDict.get<scalar>("solidus") + metalDict.get<scalar>("liquidus"));
-}
-
-
 void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
 {
     TName_ = dict.lookupOrDefault<word>("T", "T");
 
-    if (dict.found("alpha"))
-    {
-        alphaName_ = dict.get<word>("alpha");
-    }
-    else
-    {
-        const IOdictionary properties(readThermophysicalProperties(mesh_));
-        alphaName_ = "alpha." + properties.get<wordList>("phases").first();
-    }
+    // Metal phase and fusion isotherm default to the case's material
+    const IOdictionary properties(readThermophysicalProperties(mesh_));
+    const word metal = properties.get<wordList>("phases").first();
+    const dictionary& metalDict = properties.subDict(metal);
+
+    alphaName_ = dict.lookupOrDefault<word>("alpha", "alpha." + metal);
 
     surfaceHeight_ = dict.lookupOrDefault<scalar>("surfaceHeight", 0);
 
@@ -111,10 +97,11 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
     }
     transverseDir_ = verticalDir_ ^ weldDir_;
 
-    fusionTemperature_ =
-        dict.found("fusionTemperature")
-      ? dict.get<scalar>("fusionTemperature")
-      : fusionTemperatureFromProperties();
+    fusionTemperature_ = dict.lookupOrDefault<scalar>
+    (
+        "fusionTemperature",
+        0.5*(metalDict.get<scalar>("solidus") + metalDict.get<scalar>("liquidus"))
+    );
 
     if (fusionTemperature_ <= 0)
     {
@@ -174,6 +161,29 @@ Foam::label Foam::functionObjects::meltPoolMetrics::slice(const scalar w) const
 {
     const label i = label(std::floor((w - sliceOrigin_)/sliceLength_));
     return min(max(i, 0), nSlices_ - 1);
+}
+
+
+Foam::scalar
+Foam::functionObjects::meltPoolMetrics::sliceCentre(const label i) const
+{
+    return sliceOrigin_ + (i + 0.5)*sliceLength_;
+}
+
+
+Foam::label Foam::functionObjects::meltPoolMetrics::largestSlice
+(
+    const scalarList& areas
+) const
+{
+    // Of slices equal to round-off (a uniform bead), the most downstream
+    const scalar largest = max(areas);
+    label i = areas.size() - 1;
+    while (i > 0 && areas[i] < (1 - sliceAreaTolerance)*largest)
+    {
+        --i;
+    }
+    return i;
 }
 
 
@@ -240,28 +250,14 @@ Foam::functionObjects::meltPoolMetrics::calculate() const
     {
         m.penetration = surfaceHeight_ - poolBottom;
     }
-    m.fusedArea = max(fusedArea);
+    const label fusedSlice = largestSlice(fusedArea);
+    m.fusedArea = fusedArea[fusedSlice];
+    m.fusedSection = sliceCentre(fusedSlice);
 
-    // The bead section: given, or the slice of largest bead area; of slices
-    // equal to round-off (a uniform bead) the most downstream one
-    label beadSlice = nSlices_ - 1;
-    if (fixedBeadSection_)
-    {
-        beadSlice = slice(beadSection_);
-    }
-    else
-    {
-        const scalar largest = max(beadArea);
-        while
-        (
-            beadSlice > 0
-         && beadArea[beadSlice] < (1 - sliceAreaTolerance)*largest
-        )
-        {
-            --beadSlice;
-        }
-    }
-    m.beadSection = sliceOrigin_ + (beadSlice + 0.5)*sliceLength_;
+    // The bead section: given, or the slice of largest bead area
+    const label beadSlice =
+        fixedBeadSection_ ? slice(beadSection_) : largestSlice(beadArea);
+    m.beadSection = sliceCentre(beadSlice);
     m.beadArea = beadArea[beadSlice];
 
     // Pass 2: extent of the metal above the surface in the bead section
@@ -317,7 +313,7 @@ void Foam::functionObjects::meltPoolMetrics::writeFileHeader(Ostream& os)
         {
             "poolLength", "poolWidth", "penetration", "poolVolume",
             "beadWidth", "beadHeight", "beadArea", "fusedArea", "dilution",
-            "peakTemperature", "beadSection"
+            "peakTemperature", "beadSection", "fusedSection"
         }
     )
     {
@@ -392,7 +388,7 @@ bool Foam::functionObjects::meltPoolMetrics::write()
             {
                 m.poolLength, m.poolWidth, m.penetration, m.poolVolume,
                 m.beadWidth, m.beadHeight, m.beadArea, m.fusedArea,
-                m.dilution, m.peakTemperature, m.beadSection
+                m.dilution, m.peakTemperature, m.beadSection, m.fusedSection
             }
         )
         {

@@ -48,8 +48,8 @@ def prepare_test_case(name: str, destination: Path, material_from_template: bool
 
 @pytest.fixture
 def stefan_case(tmp_path: Path) -> Path:
-    """The meshed 1D melting bar (not yet run)."""
-    case = prepare_test_case("stefan1D", tmp_path, material_from_template=False)
+    """The meshed 1D melting bar of cases/stefanMelting (not yet run)."""
+    case = copy_case(PROJECT_DIR / "cases" / "stefanMelting", tmp_path / "stefanMelting")
     run(case, "blockMesh")
     return case
 

@@ -1,22 +1,32 @@
-"""Cost benchmarks: what an effect adds to a time step of the LDNA template.
+"""Cost benchmarks of the LDNA template: ratios measured in one run on this machine.
 
-``laser_cost`` copies ``cases/ldna`` (at a resolution level) into a scratch
-folder, meshes it once and runs a fixed number of fixed-size time steps
-without a laser and with each laser absorption model.  It prints the wall
-time per step and its ratio to the step without a laser, measured in one
-run on this machine (a benchmark, not a test: nothing is asserted).
+Benchmarks, not tests: nothing is asserted, the figures are printed.  Each
+copies ``cases/ldna`` (at a resolution level) into a scratch folder, meshes
+it once and runs a fixed number of fixed-size time steps, so that every
+variant does the same steps:
+
+- ``laser_cost``: no laser and each laser absorption model, the template's
+  other effects on;
+- ``solver_costs`` (``ldna bench``): ldnaFoam with no effects against
+  OpenFOAM's compressibleInterFoam on the same mesh, fields and numerics;
+  the cost of each effect of the template alone over the no-effect step;
+  the throughput in cell-steps per second per core with the projected
+  core-hours per simulated second at the paper's resolution; and the
+  parallel efficiency of ``mpirun -np 2`` against a serial run.
 """
 from __future__ import annotations
 
 import re
+import shutil
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from .foamcase import PROJECT_DIR, copy_case, run
-from .foamdict import read_scalars, remove_blocks, set_entry
+from .foamcase import PROJECT_DIR, copy_case, read_balances, run, run_parallel
+from .foamdict import block_names, keep_blocks, read_scalars, remove_blocks, set_entry
+from .meshing import mesh_counts
 
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
 
@@ -103,3 +113,195 @@ def print_costs(costs: list[StepCost], level: int) -> None:
     print(f"{'laser':<16} {'s/step':>10} {'ratio':>8}")
     for cost in costs:
         print(f"{cost.variant:<16} {cost.seconds_per_step:>10.4f} {cost.ratio:>8.3f}")
+
+
+#: The paper's configuration: about 690,000 cells with 0.15 mm at the free
+#: surface (the template's level 3 has 665,000)
+PAPER_CELLS = 690_000
+PAPER_LEVEL = 3
+#: Time step of the template's solution at a level, from its capillary limit
+#: sqrt(rho dx^3 / (2 pi sigma)), which scales as dx^1.5 [s]
+CAPILLARY_EXPONENT = 1.5
+
+#: The companion case of compressibleInterFoam: the template's metal and gas
+#: as OpenFOAM thermophysical models (316L at its reference density, argon),
+#: its constant surface tension, laminar flow
+COMPRESSIBLE_INTER_FOAM_FILES = {
+    "constant/thermophysicalProperties": """FoamFile { version 2.0; format ascii;
+    class dictionary; object thermophysicalProperties; }
+phases (metal gas);
+pMin 1e4;
+sigma { type constant; sigma 1.8; }
+""",
+    "constant/thermophysicalProperties.metal": """FoamFile { version 2.0; format ascii;
+    class dictionary; object thermophysicalProperties.metal; }
+thermoType { type heRhoThermo; mixture pureMixture; transport const; thermo hConst;
+    equationOfState rhoConst; specie specie; energy sensibleInternalEnergy; }
+mixture { specie { molWeight 55.85; } equationOfState { rho 7950; }
+    thermodynamics { Cp 500; Hf 0; } transport { mu 5e-3; Pr 0.15; } }
+""",
+    "constant/thermophysicalProperties.gas": """FoamFile { version 2.0; format ascii;
+    class dictionary; object thermophysicalProperties.gas; }
+thermoType { type heRhoThermo; mixture pureMixture; transport const; thermo hConst;
+    equationOfState perfectGas; specie specie; energy sensibleInternalEnergy; }
+mixture { specie { molWeight 39.948; } thermodynamics { Cp 520.3; Hf 0; }
+    transport { mu 2.27e-5; Pr 0.667; } }
+""",
+    "constant/turbulenceProperties": """FoamFile { version 2.0; format ascii;
+    class dictionary; object turbulenceProperties; }
+simulationType laminar;
+""",
+}
+#: Schemes compressibleInterFoam asks for beyond the template's
+COMPRESSIBLE_INTER_FOAM_SCHEMES = {
+    "divSchemes/div(rhoPhi,T)": "Gauss upwind",
+    "divSchemes/div(rhoPhi,K)": "Gauss upwind",
+    "divSchemes/div(phi,p)": "Gauss upwind",
+    "divSchemes/div(((rho*nuEff)*dev2(T(grad(U)))))": "Gauss linear",
+}
+
+
+@dataclass
+class SolverCosts:
+    """What ``solver_costs`` measured."""
+
+    level: int
+    cells: int
+    steps: int
+    delta_t: float
+    ldna_no_effects: float
+    compressible_inter_foam: float
+    effects: list[StepCost]
+    all_effects: float
+    template_delta_t: float
+    serial_all_effects: float
+    parallel_all_effects: float
+    n_procs: int
+
+    @property
+    def throughput(self) -> float:
+        """Cell-steps per second per core of the full template (serial)."""
+        return self.cells / self.all_effects
+
+    def projected_core_hours(self, cells: int = PAPER_CELLS) -> float:
+        """Core-hours per simulated second of the full template at ``cells``.
+
+        Cost per step grows with the cells at this throughput; the step
+        shrinks with the cell size as the capillary limit does (dx^1.5), the
+        cell size falling as cells^(-1/3).
+        """
+        refinement = (cells / self.cells) ** (1 / 3)
+        delta_t = self.template_delta_t / refinement ** CAPILLARY_EXPONENT
+        return cells / self.throughput / delta_t / 3600
+
+    @property
+    def parallel_efficiency(self) -> float:
+        """Serial time over (ranks x parallel time), per step."""
+        return self.serial_all_effects / (self.n_procs * self.parallel_all_effects)
+
+
+def _fixed_steps(case: Path, steps: int, delta_t: float) -> None:
+    control = case / "system" / "controlDict"
+    set_entry(control, "adjustTimeStep", "no")
+    set_entry(control, "deltaT", f"{delta_t:g}")
+    set_entry(control, "endTime", f"{steps * delta_t:g}")
+    set_entry(control, "startFrom", "startTime")
+    # No write: every variant starts from the same initial fields
+    set_entry(control, "writeInterval", "1e3")
+
+
+def _without_function_objects(case: Path) -> None:
+    control = case / "system" / "controlDict"
+    remove_blocks(control, ["functions"])
+    control.write_text(control.read_text() + "\nfunctions {}\n")
+
+
+def _compressible_inter_foam_case(scene: Path, destination: Path) -> Path:
+    """The scene's mesh, fields and numerics set up for compressibleInterFoam."""
+    case = copy_case(scene, destination)
+    shutil.copytree(scene / "constant" / "polyMesh", case / "constant" / "polyMesh")
+    for name, text in COMPRESSIBLE_INTER_FOAM_FILES.items():
+        (case / name).write_text(text)
+    (case / "constant" / "fvOptions").unlink(missing_ok=True)
+    for entry, value in COMPRESSIBLE_INTER_FOAM_SCHEMES.items():
+        run(case, f"foamDictionary -entry '{entry}' -set '{value}' system/fvSchemes",
+            log_name="foamDictionary")
+    set_entry(case / "system" / "controlDict", "application", "compressibleInterFoam")
+    return case
+
+
+def _time_per_step(case: Path, command: str, log_name: str, n_procs: int = 1) -> float:
+    if n_procs > 1:
+        run(case, "decomposePar -force", log_name="decomposePar")
+        run_parallel(case, command, n_procs, log_name=log_name)
+    else:
+        run(case, command, log_name=log_name)
+    return seconds_per_step(case / f"log.{log_name}")
+
+
+def solver_costs(level: int = 0, steps: int = 40, delta_t: float = 2e-4, n_procs: int = 2,
+                 work_dir: Path | None = None) -> SolverCosts:
+    """Run every variant of the benchmark; see the module's description."""
+    scratch = Path(work_dir or tempfile.mkdtemp(prefix="ldna-bench-"))
+    scene = copy_case(TEMPLATE, scratch / "ldna")
+    set_entry(scene / "system" / "caseParameters", "level", str(level))
+    # compressibleInterFoam has no conductivity field for the substrate
+    # walls' heat-loss condition: adiabatic walls in every variant
+    run(scene, "foamDictionary -entry boundaryField/substrateWalls -set "
+               "'{ type zeroGradient; }' 0/T", log_name="foamDictionary")
+    _without_function_objects(scene)
+    run(scene, "blockMesh")
+    run(scene, "setFields")
+    full_options = (scene / "constant" / "fvOptions").read_text()
+    effects = block_names(scene / "constant" / "fvOptions")
+
+    # The template's own time step over its first steps, for the projection
+    adaptive = copy_case(scene, scratch / "adaptive")
+    shutil.copytree(scene / "constant" / "polyMesh", adaptive / "constant" / "polyMesh")
+    set_entry(adaptive / "system" / "controlDict", "endTime", f"{steps * 10 * delta_t:g}")
+    run(adaptive, "ldnaFoam")
+    times = read_balances(adaptive / "log.ldnaFoam")["time"]
+    template_delta_t = float(np.diff(times)[len(times) // 2:].mean())
+
+    _fixed_steps(scene, steps, delta_t)
+
+    def ldna_with(names: list[str], log_name: str, n: int = 1) -> float:
+        (scene / "constant" / "fvOptions").write_text(full_options)
+        keep_blocks(scene / "constant" / "fvOptions", names)
+        return _time_per_step(scene, "ldnaFoam", log_name, n)
+
+    no_effects = ldna_with([], "ldnaFoam.none")
+    inter = _compressible_inter_foam_case(scene, scratch / "compressibleInterFoam")
+    inter_foam = _time_per_step(inter, "compressibleInterFoam", "compressibleInterFoam")
+    costs = [StepCost(name, ldna_with([name], f"ldnaFoam.{name}"), 0.0) for name in effects]
+    for cost in costs:
+        cost.ratio = cost.seconds_per_step / no_effects
+    serial = ldna_with(effects, "ldnaFoam.all")
+    parallel = ldna_with(effects, "ldnaFoam.parallel", n_procs)
+    counts = mesh_counts(read_scalars(scene / "system" / "caseParameters"), level)
+    return SolverCosts(level=level, cells=counts.n_cells, steps=steps, delta_t=delta_t,
+                       ldna_no_effects=no_effects, compressible_inter_foam=inter_foam,
+                       effects=costs, all_effects=serial, template_delta_t=template_delta_t,
+                       serial_all_effects=serial, parallel_all_effects=parallel,
+                       n_procs=n_procs)
+
+
+def print_solver_costs(c: SolverCosts) -> None:
+    """Print the benchmark's figures and ratios."""
+    print(f"LDNA template, level {c.level}: {c.cells} cells, {c.steps} fixed steps of "
+          f"{c.delta_t:g} s, wall time per step")
+    print(f"  compressibleInterFoam          {c.compressible_inter_foam:9.4f} s")
+    print(f"  ldnaFoam, no effects           {c.ldna_no_effects:9.4f} s   ratio to "
+          f"compressibleInterFoam {c.ldna_no_effects / c.compressible_inter_foam:.3f}")
+    for cost in c.effects:
+        print(f"  ldnaFoam + {cost.variant:<20} {cost.seconds_per_step:9.4f} s   ratio to "
+              f"no effects {cost.ratio:.3f}")
+    print(f"  ldnaFoam, all effects          {c.all_effects:9.4f} s   ratio to "
+          f"no effects {c.all_effects / c.ldna_no_effects:.3f}")
+    print(f"Throughput (all effects, serial): {c.throughput:.4g} cell-steps per second per core")
+    print(f"Template's adaptive time step at this level: {c.template_delta_t:.3g} s")
+    print(f"Projected for the paper's {PAPER_CELLS} cells (0.15 mm at the surface): "
+          f"{c.projected_core_hours():.4g} core-hours per simulated second")
+    print(f"mpirun -np {c.n_procs}: {c.parallel_all_effects:.4f} s per step, speed-up "
+          f"{c.serial_all_effects / c.parallel_all_effects:.3f}, parallel efficiency "
+          f"{c.parallel_efficiency:.3f}")

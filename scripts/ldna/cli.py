@@ -20,6 +20,12 @@ def _bench_laser(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench(args: argparse.Namespace) -> int:
+    costs = benchmark.solver_costs(level=args.level, steps=args.steps, n_procs=args.np)
+    benchmark.print_solver_costs(costs)
+    return 0
+
+
 def _gmsh_mesh(args: argparse.Namespace) -> int:
     from . import gmsh_mesh
 
@@ -39,6 +45,23 @@ def _study(args: argparse.Namespace) -> int:
     if failed:
         print("failed: " + ", ".join(failed) + " (see their log.Allrun and log.*)")
     return 1 if failed else 0
+
+
+def _accuracy(args: argparse.Namespace) -> int:
+    from . import accuracy
+
+    scene = None if args.scene == "auto" else accuracy.SCENES[args.scene]
+    study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
+                                      levels=args.levels, max_co=args.max_co,
+                                      end_time=args.end_time, n_procs=args.np)
+    print(accuracy.markdown(study))
+    for path in paths:
+        print(path)
+    return 0
+
+
+def _float_list(text: str) -> list[float]:
+    return [float(value) for value in text.split(",")]
 
 
 def _post(args: argparse.Namespace) -> int:
@@ -74,6 +97,17 @@ def build_parser() -> argparse.ArgumentParser:
     bench_laser.add_argument("--steps", type=int, default=20, help="fixed time steps per run")
     bench_laser.set_defaults(func=_bench_laser)
 
+    bench = commands.add_parser(
+        "bench",
+        help="cost ratios: ldnaFoam without effects against compressibleInterFoam, each "
+             "effect against none, throughput and projected core-hours at the paper's "
+             "resolution, parallel efficiency",
+    )
+    bench.add_argument("--level", type=int, default=0, help="mesh level (0..3)")
+    bench.add_argument("--steps", type=int, default=40, help="fixed time steps per run")
+    bench.add_argument("--np", type=int, default=2, help="MPI ranks of the parallel run")
+    bench.set_defaults(func=_bench)
+
     gmsh = commands.add_parser(
         "gmsh-mesh",
         help="mesh an LDNA case with gmsh (hexahedra, refined band at the surface) "
@@ -98,6 +132,28 @@ def build_parser() -> argparse.ArgumentParser:
     study.add_argument("--end-time", type=float, help="simulated time of every member [s]")
     study.add_argument("--np", type=int, default=1, help="MPI ranks per member (1: serial)")
     study.set_defaults(func=_study)
+
+    accuracy = commands.add_parser(
+        "accuracy",
+        help="run a scene at several mesh levels: error of its key outputs against cost "
+             "(CSV, Markdown table, log-log plot, observed order)",
+        description="Copy CASE into OUTPUT/members once per level (and maxCo), run each, "
+                    "compare the key outputs with the analytical answer (stefanMelting) or "
+                    "the finest run (LDNA scene), and write OUTPUT/accuracy.{csv,md,png}.",
+    )
+    accuracy.add_argument("case", help="case template: cases/ldna or cases/stefanMelting")
+    accuracy.add_argument("output", help="folder of the study")
+    accuracy.add_argument("--scene", choices=("auto", "ldna", "stefan"), default="auto",
+                          help="kind of scene [from the case's caseParameters]")
+    accuracy.add_argument("--levels", type=_float_list, metavar="L1,L2,...",
+                          help="mesh levels; LDNA: 0..3, halves allowed (cells of "
+                               "1.2 mm/2^level) [0,0.5,1,1.5]; Stefan: 25*2^level cells "
+                               "and time steps of 16 ms/2^level [0,1,2,3,4]")
+    accuracy.add_argument("--max-co", type=_float_list, metavar="C1,C2,...",
+                          help="also vary maxCo and maxAlphaCo (adjustable time step)")
+    accuracy.add_argument("--end-time", type=float, help="simulated time of every run [s]")
+    accuracy.add_argument("--np", type=int, default=1, help="MPI ranks per run (1: serial)")
+    accuracy.set_defaults(func=_accuracy)
 
     post = commands.add_parser(
         "post",

@@ -7,6 +7,7 @@ to OpenFOAM's own ``foamDictionary``.
 from __future__ import annotations
 
 import re
+from itertools import accumulate
 from pathlib import Path
 
 _ENTRY = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_.]*)\s+([^;{}]+?)\s*;", re.MULTILINE)
@@ -98,6 +99,33 @@ def remove_blocks(path: Path, names: list[str]) -> None:
     for start, end in sorted((blocks[name] for name in names), reverse=True):
         text = text[:start] + text[end:].lstrip("\n")
     path.write_text(text)
+
+
+def set_block_entry(path: Path, block: str, keyword: str, value: str) -> None:
+    """Set ``keyword value;`` directly inside the top-level sub-dictionary ``block``.
+
+    An existing entry of the block is replaced, otherwise the entry is added
+    after the opening brace; the rest of the file (``#include``, ``#eval``,
+    comments) stays as written.
+    """
+    path = Path(path)
+    text = path.read_text()
+    spans = {name: (start, end) for name, start, end in _top_level_blocks(text)}
+    if block not in spans:
+        raise KeyError(f"no sub-dictionary '{block}' in {path}")
+    start, end = spans[block]
+    body = text[start:end]
+    opening = body.index("{") + 1
+    # Only entries at the block's own level: none inside nested braces
+    depth_at = list(accumulate((c == "{") - (c == "}") for c in body))
+    pattern = re.compile(rf"^([ \t]*{re.escape(keyword)}\s+)[^;{{}}]*;", re.MULTILINE)
+    for match in pattern.finditer(body):
+        if depth_at[match.start()] == 1:
+            body = body[:match.start()] + f"{match.group(1)}{value};" + body[match.end():]
+            break
+    else:
+        body = body[:opening] + f"\n    {keyword} {value};" + body[opening:]
+    path.write_text(text[:start] + body + text[end:])
 
 
 def keep_blocks(path: Path, names: list[str]) -> None:

@@ -19,7 +19,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from .foamdict import read_scalars
+from .foamdict import read_scalars, set_entry
 
 #: Interface cell height at level 0 [mm]; 1.2 / 2**3 = 0.15 mm, the paper's
 #: finest cells
@@ -48,8 +48,12 @@ class MeshCounts:
         return self.nx * self.ny * nz
 
 
-def interface_cell_size(level: int) -> float:
-    """Finest cell height [mm] at a resolution level."""
+def interface_cell_size(level: float) -> float:
+    """Finest cell height [mm] at a resolution level.
+
+    Levels between the whole ones (``ldna accuracy`` uses halves) give cells
+    of ``1.2 mm / 2**level`` as well.
+    """
     if not 0 <= level <= MAX_LEVEL:
         raise ValueError(f"level must be in [0, {MAX_LEVEL}], not {level}")
     return LEVEL0_INTERFACE_CELL / 2**level
@@ -59,7 +63,7 @@ def _graded_cells(length: float, dz_min: float, dz_max: float) -> int:
     return max(1, round(length * math.log(dz_max / dz_min) / (dz_max - dz_min)))
 
 
-def mesh_counts(parameters: dict[str, float], level: int) -> MeshCounts:
+def mesh_counts(parameters: dict[str, float], level: float) -> MeshCounts:
     """Cell counts for the geometry in ``caseParameters`` at ``level``."""
     dz_min = interface_cell_size(level)
     dxy = IN_PLANE_ASPECT * dz_min
@@ -76,7 +80,12 @@ def mesh_counts(parameters: dict[str, float], level: int) -> MeshCounts:
     )
 
 
-def level_file_text(counts: MeshCounts, level: int) -> str:
+def level_name(level: float) -> str:
+    """How a level is spelled in caseParameters and meshLevels file names: 1, 1.5."""
+    return f"{level:g}"
+
+
+def level_file_text(counts: MeshCounts, level: float) -> str:
     """Contents of ``system/meshLevels/level<N>``."""
     return (
         "// Cell counts of resolution level {level} (about {cells} cells), written by\n"
@@ -91,7 +100,7 @@ def level_file_text(counts: MeshCounts, level: int) -> str:
         "nSubTotal   {n_sub};\n"
         "nCladTotal  {n_clad};\n"
     ).format(
-        level=level,
+        level=level_name(level),
         cells=counts.n_cells,
         c=counts,
         n_sub=counts.n_sub_fine + counts.n_sub_coarse,
@@ -99,15 +108,38 @@ def level_file_text(counts: MeshCounts, level: int) -> str:
     )
 
 
-def write_mesh_levels(case: Path) -> list[Path]:
-    """Write ``system/meshLevels/level0..3`` of an LDNA case; return the paths."""
+def write_level_file(case: Path, level: float) -> Path:
+    """Write ``system/meshLevels/level<level>`` of an LDNA case; return its path."""
     case = Path(case)
     parameters = read_scalars(case / "system" / "caseParameters")
     out_dir = case / "system" / "meshLevels"
     out_dir.mkdir(exist_ok=True)
-    written = []
-    for level in range(MAX_LEVEL + 1):
-        path = out_dir / f"level{level}"
-        path.write_text(level_file_text(mesh_counts(parameters, level), level))
-        written.append(path)
-    return written
+    path = out_dir / f"level{level_name(level)}"
+    path.write_text(level_file_text(mesh_counts(parameters, level), level))
+    return path
+
+
+#: How the template's blockMeshDict includes the counts of its level
+LEVEL_INCLUDE = '#include "meshLevels/level$level"'
+
+
+def set_level(case: Path, level: float) -> None:
+    """Mesh an LDNA case at any ``level`` in [0, 3], whole or not (1.5: 0.42 mm).
+
+    Writes the level's cell counts, sets ``level`` in caseParameters and makes
+    blockMeshDict include that file by its name: OpenFOAM spells a fractional
+    ``$level`` with trailing zeros (``level1.50000000``), which no file has.
+    """
+    case = Path(case)
+    path = write_level_file(case, level)
+    set_entry(case / "system" / "caseParameters", "level", level_name(level))
+    block_mesh = case / "system" / "blockMeshDict"
+    text = block_mesh.read_text()
+    if LEVEL_INCLUDE not in text:
+        raise ValueError(f"{block_mesh} does not include its counts by '{LEVEL_INCLUDE}'")
+    block_mesh.write_text(text.replace(LEVEL_INCLUDE, f'#include "meshLevels/{path.name}"'))
+
+
+def write_mesh_levels(case: Path) -> list[Path]:
+    """Write ``system/meshLevels/level0..3`` of an LDNA case; return the paths."""
+    return [write_level_file(case, level) for level in range(MAX_LEVEL + 1)]

@@ -341,11 +341,14 @@ Foam::metalGasMixture::metalGasMixture
         (
             IOobject::groupName("rho", phase2Name()),
             U.time().timeName(),
-            U.mesh()
+            U.mesh(),
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
         ),
         U.mesh(),
         dimensionedScalar(dimDensity, Zero)
     ),
+    restartedGasDensity_(false),
     psi2_
     (
         IOobject
@@ -430,7 +433,19 @@ Foam::metalGasMixture::metalGasMixture
         }
     }
 
+    // The gas density of a written time is the pressure solution's
+    // incremental update of psi2 p (correctGasDensity), not psi2 p itself:
+    // a restart takes it as written so that it continues where the run was
+    // stopped
+    restartedGasDensity_ = rho2_.typeHeaderOk<volScalarField>(true);
+    const volScalarField rho2Written("rho2Written", rho2_);
+
     correctThermo();
+
+    if (restartedGasDensity_)
+    {
+        rho2_ = rho2Written;
+    }
 }
 
 

@@ -1,0 +1,363 @@
+"""What accuracy costs: a scene run at several resolutions, error against cost.
+
+``ldna accuracy CASE OUT`` copies a case once per mesh level (and per
+time-step setting), runs each copy, and records
+
+- the cost: wall time of the solver run, core-seconds per simulated
+  millisecond (wall time x MPI ranks / simulated ms), cells and steps;
+- the scene's key outputs and their relative error against the analytical
+  answer where the scene has one (``cases/stefanMelting``: the Neumann
+  melting front) or against the finest run (the LDNA scene: melt-pool width
+  and depth, peak temperature, metal mass, bead area);
+- the observed order of convergence of each output: the least-squares slope
+  of log(error) over log(cell size) at the finest time-step setting.
+
+It writes ``OUT/accuracy.csv``, ``OUT/accuracy.md`` (a Markdown table) and
+``OUT/accuracy.png`` (log-log error against core-seconds per simulated ms).
+"""
+from __future__ import annotations
+
+import csv
+import math
+import re
+import shutil
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Protocol
+
+import numpy as np
+
+from . import meshing
+from .foamcase import copy_case, dictionary_scalar, read_balances, read_function_object, run, time_directories
+from .foamdict import read_scalars, set_entry
+from .stefan import NeumannSolution, front_position
+
+
+class Scene(Protocol):
+    """How ``ldna accuracy`` resolves, runs and measures one kind of case."""
+
+    name: str
+    #: Output name -> (label, unit, scale from SI to that unit)
+    outputs_meta: dict[str, tuple[str, str, float]]
+    default_levels: tuple[float, ...]
+
+    def set_resolution(self, case: Path, level: float) -> float:
+        """Mesh ``case`` at ``level``; return the finest cell size [mm]."""
+
+    def prepare(self, case: Path) -> None:
+        """Make the mesh and initial fields."""
+
+    def outputs(self, case: Path) -> dict[str, float]:
+        """Key outputs of a finished run, in SI units."""
+
+    def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
+        """Analytical outputs at ``end_time``, or None (compare with the finest run)."""
+
+
+class LdnaScene:
+    """The LDNA template scene: outputs of the meltPoolMetrics function object."""
+
+    name = "ldna"
+    outputs_meta = {
+        "poolWidth": ("melt-pool width", "mm", 1e3),
+        "penetration": ("penetration", "mm", 1e3),
+        "peakTemperature": ("peak metal temperature", "K", 1.0),
+        "metalMass": ("metal mass", "g", 1e3),
+        "beadArea": ("bead area", "mm2", 1e6),
+    }
+    #: Interface cells of 1.2, 0.85, 0.6 and 0.42 mm (about 2 000 to 36 000 cells)
+    default_levels = (0.0, 0.5, 1.0, 1.5)
+
+    def set_resolution(self, case: Path, level: float) -> float:
+        meshing.set_level(case, level)
+        # The metrics at the end time only: at write times, and the end is one
+        run(case, "foamDictionary -entry functions/meltPoolMetrics/writeControl "
+                  "-set writeTime system/controlDict", log_name="foamDictionary")
+        return meshing.interface_cell_size(level)
+
+    def prepare(self, case: Path) -> None:
+        run(case, "blockMesh")
+        run(case, "setFields")
+
+    def outputs(self, case: Path) -> dict[str, float]:
+        rows = read_function_object(case, "meltPoolMetrics", "meltPoolMetrics.dat")
+        header = _function_object_header(case, "meltPoolMetrics", "meltPoolMetrics.dat")
+        last = dict(zip(header, rows[-1]))
+        balances = read_balances(case / "log.ldnaFoam")
+        values = {name: float(last[name]) for name in self.outputs_meta if name in last}
+        values["metalMass"] = float(balances["metal_mass"][-1])
+        return values
+
+    def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
+        return None
+
+
+class StefanScene:
+    """``cases/stefanMelting``: the melting front against the Neumann solution."""
+
+    name = "stefan"
+    outputs_meta = {"front": ("melting front position", "mm", 1e3)}
+    #: 25 cells (0.8 mm) doubled per level; level 3 is the case's 0.1 mm
+    default_levels = (0.0, 1.0, 2.0, 3.0, 4.0)
+    #: Cells along the 20 mm bar and time step at level 0; both halve per
+    #: level, so that the first-order time error falls with the space error
+    level0_cells = 25
+    level0_delta_t = 16e-3
+
+    def set_resolution(self, case: Path, level: float) -> float:
+        parameters = case / "system" / "caseParameters"
+        cells = round(self.level0_cells * 2**level)
+        set_entry(parameters, "cellsAlongBar", str(cells))
+        set_entry(parameters, "deltaT", f"{self.level0_delta_t / 2**level:.9g}")
+        length_mm = 20.0
+        return length_mm / cells
+
+    def prepare(self, case: Path) -> None:
+        run(case, "blockMesh")
+
+    def outputs(self, case: Path) -> dict[str, float]:
+        last = time_directories(case)[-1].name
+        return {"front": front_position(case, last)}
+
+    def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
+        return {"front": NeumannSolution.from_case(case).front(end_time)}
+
+
+SCENES: dict[str, Scene] = {"ldna": LdnaScene(), "stefan": StefanScene()}
+
+
+def detect_scene(case: Path) -> Scene:
+    """The scene of a case from its caseParameters."""
+    parameters = read_scalars(Path(case) / "system" / "caseParameters")
+    if "cellsAlongBar" in parameters:
+        return SCENES["stefan"]
+    if "level" in parameters:
+        return SCENES["ldna"]
+    raise ValueError(f"{case}: not an LDNA or Stefan case (system/caseParameters has "
+                     "neither 'level' nor 'cellsAlongBar'); give --scene")
+
+
+def _function_object_header(case: Path, name: str, file: str) -> list[str]:
+    for path in sorted((Path(case) / "postProcessing" / name).glob(f"*/{file}")):
+        for line in path.read_text().splitlines():
+            if line.startswith("# Time"):
+                return line[1:].split()
+    raise ValueError(f"{case}: no header in postProcessing/{name}/*/{file}")
+
+
+@dataclass
+class Member:
+    """One run of the study and what it cost."""
+
+    level: float
+    max_co: float | None
+    cell_size_mm: float
+    cells: int = 0
+    steps: int = 0
+    wall_time: float = math.nan
+    n_procs: int = 1
+    end_time: float = math.nan
+    outputs: dict[str, float] = field(default_factory=dict)
+    errors: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        """Folder name of the member."""
+        co = "" if self.max_co is None else f"-co{self.max_co:g}"
+        return f"level{meshing.level_name(self.level)}{co}"
+
+    @property
+    def core_seconds_per_ms(self) -> float:
+        """Core-seconds per simulated millisecond."""
+        return self.wall_time * self.n_procs / (self.end_time * 1e3)
+
+
+_STEP = re.compile(r"^Time = ", re.M)
+
+
+def run_member(template: Path, directory: Path, scene: Scene, member: Member,
+               end_time: float | None, n_procs: int) -> Member:
+    """Copy, mesh and run one member; fill in its cost and outputs."""
+    if directory.exists():
+        shutil.rmtree(directory)
+    case = copy_case(template, directory)
+    member.cell_size_mm = scene.set_resolution(case, member.level)
+    control = case / "system" / "controlDict"
+    if end_time is not None:
+        set_entry(control, "endTime", f"{end_time:g}")
+    member.end_time = dictionary_scalar(case, "system/controlDict", "endTime")
+    if member.max_co is not None:
+        set_entry(control, "maxCo", f"{member.max_co:g}")
+        set_entry(control, "maxAlphaCo", f"{member.max_co:g}")
+    scene.prepare(case)
+    member.cells = _count_cells(case)
+
+    member.n_procs = n_procs
+    if n_procs > 1:
+        set_entry(case / "system" / "decomposeParDict", "numberOfSubdomains", str(n_procs))
+        run(case, "decomposePar -force")
+        command = f"mpirun -np {n_procs} ldnaFoam -parallel"
+    else:
+        command = "ldnaFoam"
+    start = time.perf_counter()
+    result = run(case, command, log_name="ldnaFoam")
+    member.wall_time = time.perf_counter() - start
+    if n_procs > 1:
+        run(case, "reconstructPar -latestTime")
+    member.steps = len(_STEP.findall(result.output))
+    member.outputs = scene.outputs(case)
+    return member
+
+
+def _count_cells(case: Path) -> int:
+    """Cells of the mesh, from the note in the owner file's header (ASCII or binary)."""
+    owner = (case / "constant" / "polyMesh" / "owner").read_bytes()[:2000].decode(errors="replace")
+    match = re.search(r"nCells:\s*(\d+)", owner)
+    if not match:
+        raise ValueError(f"{case}: no cell count in constant/polyMesh/owner")
+    return int(match.group(1))
+
+
+@dataclass
+class Study:
+    """The members, the reference and the fitted orders of a study."""
+
+    scene: Scene
+    members: list[Member]
+    reference: dict[str, float]
+    reference_name: str
+    orders: dict[str, float]
+
+
+def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None) -> Study:
+    """Errors against the exact answer or the finest member, and the observed orders."""
+    finest_co = min((m.max_co for m in members if m.max_co is not None), default=None)
+    at_finest_co = [m for m in members if m.max_co == finest_co]
+    if exact is not None:
+        reference, reference_name = exact, "analytical solution"
+        fitted = at_finest_co
+    else:
+        finest = min(at_finest_co, key=lambda m: m.cell_size_mm)
+        reference, reference_name = finest.outputs, f"finest run ({finest.name})"
+        fitted = [m for m in at_finest_co if m is not finest]
+    for member in members:
+        member.errors = {
+            name: abs(value - reference[name]) / abs(reference[name])
+            if reference.get(name) else math.nan
+            for name, value in member.outputs.items()
+        }
+    orders = {}
+    for name in scene.outputs_meta:
+        points = [(m.cell_size_mm, m.errors.get(name, math.nan)) for m in fitted]
+        points = [(h, e) for h, e in points if e > 0 and math.isfinite(e)]
+        if len(points) >= 2 and len({h for h, _ in points}) >= 2:
+            h, e = np.log(np.array(points)).T
+            orders[name] = float(np.polyfit(h, e, 1)[0])
+        else:
+            orders[name] = math.nan
+    return Study(scene, members, reference, reference_name, orders)
+
+
+def write_csv(study: Study, path: Path) -> None:
+    """One row per member: resolution, cost, each output and its error."""
+    names = list(study.scene.outputs_meta)
+    with path.open("w", newline="") as stream:
+        writer = csv.writer(stream)
+        writer.writerow(["level", "max_co", "cell_size_mm", "cells", "n_procs", "steps",
+                         "wall_time_s", "core_s_per_sim_ms"]
+                        + [f"{n}_{study.scene.outputs_meta[n][1]}" for n in names]
+                        + [f"{n}_rel_error" for n in names])
+        for m in study.members:
+            writer.writerow(
+                [meshing.level_name(m.level), "" if m.max_co is None else f"{m.max_co:g}",
+                 f"{m.cell_size_mm:.6g}", m.cells, m.n_procs, m.steps, f"{m.wall_time:.3f}",
+                 f"{m.core_seconds_per_ms:.6g}"]
+                + [f"{m.outputs.get(n, math.nan) * study.scene.outputs_meta[n][2]:.8g}"
+                   for n in names]
+                + [f"{m.errors.get(n, math.nan):.6g}" for n in names])
+
+
+def markdown(study: Study) -> str:
+    """The study as a Markdown table with the reference and the fitted orders."""
+    meta = study.scene.outputs_meta
+    names = list(meta)
+    head = ["level", "maxCo", "cell [mm]", "cells", "steps", "wall [s]", "core-s/ms"] + \
+        [f"{meta[n][0]} [{meta[n][1]}] (error)" for n in names]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for m in study.members:
+        cells = [meshing.level_name(m.level), "-" if m.max_co is None else f"{m.max_co:g}",
+                 f"{m.cell_size_mm:.3g}", str(m.cells), str(m.steps), f"{m.wall_time:.1f}",
+                 f"{m.core_seconds_per_ms:.3g}"]
+        for n in names:
+            value = m.outputs.get(n, math.nan) * meta[n][2]
+            error = m.errors.get(n, math.nan)
+            cells.append(f"{value:.4g} ({100 * error:.2f} %)" if math.isfinite(error)
+                         else f"{value:.4g}")
+        lines.append("| " + " | ".join(cells) + " |")
+    reference = ", ".join(f"{meta[n][0]} {study.reference[n] * meta[n][2]:.5g} {meta[n][1]}"
+                          for n in names if n in study.reference)
+    orders = ", ".join(f"{meta[n][0]} {study.orders[n]:.2f}" for n in names
+                       if math.isfinite(study.orders.get(n, math.nan)))
+    lines += ["", f"Errors are relative to the {study.reference_name}: {reference}.",
+              f"Observed order of convergence (slope of log error over log cell size): "
+              f"{orders or 'not enough non-zero errors to fit'}."]
+    return "\n".join(lines) + "\n"
+
+
+def plot(study: Study, path: Path) -> None:
+    """Log-log error against core-seconds per simulated millisecond."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    meta = study.scene.outputs_meta
+    figure, axes = plt.subplots(figsize=(7, 5))
+    for name in meta:
+        points = sorted((m.core_seconds_per_ms, m.errors.get(name, math.nan), m)
+                        for m in study.members if m.errors.get(name, 0) > 0)
+        if not points:
+            continue
+        cost, error, members = zip(*points)
+        axes.loglog(cost, error, "o-", label=f"{meta[name][0]} (order "
+                    f"{study.orders.get(name, math.nan):.2f})")
+        for c, e, m in zip(cost, error, members):
+            axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
+                          xytext=(4, 4), fontsize=7)
+    axes.set_xlabel("core-seconds per simulated millisecond")
+    axes.set_ylabel(f"relative error against the {study.reference_name}")
+    axes.set_title(f"{study.scene.name} scene: accuracy against cost")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+    plt.close(figure)
+
+
+def run_study(template: Path, out: Path, scene: Scene | None = None,
+              levels: list[float] | None = None, max_co: list[float] | None = None,
+              end_time: float | None = None, n_procs: int = 1) -> tuple[Study, list[Path]]:
+    """Run the members, evaluate them and write CSV, Markdown and PNG into ``out``."""
+    template, out = Path(template), Path(out)
+    scene = scene or detect_scene(template)
+    levels = list(levels or scene.default_levels)
+    if len(levels) < 2:
+        raise ValueError("give at least two levels")
+    out.mkdir(parents=True, exist_ok=True)
+    members = []
+    for co in (max_co or [None]):
+        for level in levels:
+            member = Member(level=level, max_co=co, cell_size_mm=math.nan)
+            print(f"{scene.name}: running {member.name} ...", flush=True)
+            run_member(template, out / "members" / member.name, scene, member, end_time, n_procs)
+            print(f"  {member.cells} cells, {member.steps} steps, {member.wall_time:.1f} s "
+                  f"wall, {member.core_seconds_per_ms:.3g} core-s per simulated ms", flush=True)
+            members.append(member)
+    exact = scene.exact(out / "members" / members[0].name, members[0].end_time)
+    study = evaluate(scene, members, exact)
+    paths = [out / "accuracy.csv", out / "accuracy.md", out / "accuracy.png"]
+    write_csv(study, paths[0])
+    paths[1].write_text(markdown(study))
+    plot(study, paths[2])
+    return study, paths

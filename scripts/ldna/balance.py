@@ -1,0 +1,135 @@
+"""Metal mass balance and solver health of an ldnaFoam run, read from its outputs.
+
+The metal in the domain changes by what the droplet sources add, what
+evaporation removes and what the flow carries through the boundaries:
+
+    m(t1) - m(t0) = added - evaporated - rho_ref * sum_n Q_n dt_n
+
+``Q_n`` is the metal volume flow out of the domain (``alphaPhi0.metal``
+summed over the substrate inlet, outlet and atmosphere patches by the
+template's ``metalFlow*`` function objects, written every step) and
+``rho_ref`` the Boussinesq reference density with which the solver carries
+metal mass.  The residual is judged against the metal *turnover* (what
+entered plus what the wires fed), not against the mass of the whole
+substrate, which would hide any error in the deposit.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .foamcase import read_balances, read_function_object
+from .material import Metal
+
+#: The template's function objects of metal volume flow through its patches
+FLOW_FUNCTION_OBJECTS = ("metalFlowIn", "metalFlowOut", "metalFlowAtmosphere")
+
+_ADDED = re.compile(r"dropletSource \S+: wire (\S+) added mass = (\S+) kg")
+_EVAPORATED = re.compile(r"evaporation \S+: mass rate = \S+ kg/s, evaporated mass = (\S+) kg")
+_SOLVE = re.compile(r"Solving for (\S+), Initial residual = (\S+), Final residual = (\S+), "
+                    r"No Iterations (\d+)")
+
+#: OpenFOAM's default maximum number of linear-solver iterations (lduMatrix)
+DEFAULT_MAX_ITER = 1000
+
+
+@dataclass(frozen=True)
+class MassBalance:
+    """Metal mass budget of one run [kg]."""
+
+    start: float
+    end: float
+    added: float
+    evaporated: float
+    inflow: float
+    outflow: float
+
+    @property
+    def residual(self) -> float:
+        """Mass change not explained by sources, sinks and boundary flows."""
+        return (self.end - self.start) - (self.added - self.evaporated
+                                          + self.inflow - self.outflow)
+
+    @property
+    def turnover(self) -> float:
+        """Metal that entered the domain: boundary inflow plus droplets."""
+        return self.inflow + self.added
+
+    @property
+    def relative_residual(self) -> float:
+        """Residual relative to the turnover."""
+        return abs(self.residual) / self.turnover
+
+
+def _last_per_key(pattern: re.Pattern[str], text: str) -> dict[str, float]:
+    values: dict[str, float] = {}
+    for match in pattern.finditer(text):
+        values[match.group(1)] = float(match.group(2))
+    return values
+
+
+def metal_mass_balance(case: Path, log_name: str = "ldnaFoam") -> MassBalance:
+    """Mass budget of the run logged in ``case/log.<log_name>``."""
+    case = Path(case)
+    log = case / f"log.{log_name}"
+    text = log.read_text()
+    balances = read_balances(log)
+    metal = Metal.from_case(case)
+    if metal.density_model != "Boussinesq":
+        raise ValueError(f"{case}: the flow balance needs the Boussinesq metal "
+                         f"(constant mass density), not {metal.density_model}")
+
+    inflow = outflow = 0.0
+    for name in FLOW_FUNCTION_OBJECTS:
+        rows = read_function_object(case, name, "surfaceFieldValue.dat")
+        if rows.size == 0:
+            continue
+        # Each row is the flow of the step that ended at its time
+        times = rows[:, 0]
+        steps = np.diff(np.concatenate(([balances["time"][0]], times)))
+        volume = rows[:, 1] * steps
+        inflow -= metal.reference_density * volume[volume < 0].sum()
+        outflow += metal.reference_density * volume[volume > 0].sum()
+
+    evaporated = [float(v) for v in _EVAPORATED.findall(text)]
+    return MassBalance(
+        start=float(balances["metal_mass"][0]),
+        end=float(balances["metal_mass"][-1]),
+        added=sum(_last_per_key(_ADDED, text).values()),
+        evaporated=evaporated[-1] if evaporated else 0.0,
+        inflow=float(inflow),
+        outflow=float(outflow),
+    )
+
+
+@dataclass(frozen=True)
+class SolverHealth:
+    """What the linear solvers reported over a run."""
+
+    solves: int
+    max_iterations: int
+    worst_final_residual: float
+    all_finite: bool
+
+    def diverged(self, max_iter: int = DEFAULT_MAX_ITER) -> bool:
+        """A solve hit the iteration limit or produced a non-finite residual."""
+        return (not self.all_finite) or self.max_iterations >= max_iter
+
+
+def solver_health(log: Path) -> SolverHealth:
+    """Iterations and residuals of every linear solve in a solver log."""
+    solves = _SOLVE.findall(Path(log).read_text())
+    if not solves:
+        raise ValueError(f"{log}: no linear solves logged")
+    finals = [float(final) for _, _, final, _ in solves]
+    initials = [float(initial) for _, initial, _, _ in solves]
+    return SolverHealth(
+        solves=len(solves),
+        max_iterations=max(int(n) for *_, n in solves),
+        worst_final_residual=max(finals),
+        all_finite=all(math.isfinite(v) for v in finals + initials),
+    )

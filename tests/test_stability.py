@@ -147,7 +147,9 @@ def test_hard_case_stays_stable(ldna_case: Path, hard_case: HardCase) -> None:
     log = case / "log.ldnaFoam"
 
     balances = read_balances(log)
-    assert balances["time"][-1] >= hard_case.end_time * (1 - 1e-9), "run ended early"
+    # OpenFOAM ends a run when less than half a step is left
+    last_step = balances["time"][-1] - balances["time"][-2]
+    assert balances["time"][-1] >= hard_case.end_time - 0.5 * last_step, "run ended early"
 
     low, high = alpha_bounds(log)
     print(f"{hard_case.name}: alpha in [{low:.3e}, {1 - high:+.3e} from 1]")

@@ -48,9 +48,9 @@ def test_order_fit_recovers_a_known_order(order: float) -> None:
     members = []
     for level, h in enumerate((0.8, 0.4, 0.2, 0.1, 0.001)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"poolWidth": 2e-3 * (1 + h**order)}
+        member.outputs = {"pool_width": 2e-3 * (1 + h**order)}
         members.append(member)
     study = accuracy.evaluate(scene, members, exact=None)
     # The finest run is not exact: its own error biases the fit a little
-    assert study.orders["poolWidth"] == pytest.approx(order, rel=0.05)
+    assert study.orders["pool_width"] == pytest.approx(order, rel=0.05)
     assert math.isnan(study.orders["penetration"])

@@ -29,7 +29,7 @@ from typing import Protocol
 import numpy as np
 
 from . import meshing
-from .foamcase import copy_case, dictionary_scalar, read_balances, read_function_object, run, time_directories
+from .foamcase import copy_case, dictionary_scalar, read_balances, run, time_directories
 from .foamdict import read_scalars, set_entry
 from .stefan import NeumannSolution, front_position
 
@@ -60,11 +60,11 @@ class LdnaScene:
 
     name = "ldna"
     outputs_meta = {
-        "poolWidth": ("melt-pool width", "mm", 1e3),
+        "pool_width": ("melt-pool width", "mm", 1e3),
         "penetration": ("penetration", "mm", 1e3),
-        "peakTemperature": ("peak metal temperature", "K", 1.0),
-        "metalMass": ("metal mass", "g", 1e3),
-        "beadArea": ("bead area", "mm2", 1e6),
+        "peak_temperature": ("peak metal temperature", "K", 1.0),
+        "metal_mass": ("metal mass", "g", 1e3),
+        "bead_area": ("bead area", "mm2", 1e6),
     }
     #: Interface cells of 1.2, 0.85, 0.6 and 0.42 mm (about 2 000 to 36 000 cells)
     default_levels = (0.0, 0.5, 1.0, 1.5)
@@ -72,8 +72,9 @@ class LdnaScene:
     def set_resolution(self, case: Path, level: float) -> float:
         meshing.set_level(case, level)
         # The metrics at the end time only: at write times, and the end is one
-        run(case, "foamDictionary -entry functions/meltPoolMetrics/writeControl "
-                  "-set writeTime system/controlDict", log_name="foamDictionary")
+        for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
+            run(case, f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
+                      "system/controlDict", log_name="foamDictionary")
         return meshing.interface_cell_size(level)
 
     def prepare(self, case: Path) -> None:
@@ -81,12 +82,12 @@ class LdnaScene:
         run(case, "setFields")
 
     def outputs(self, case: Path) -> dict[str, float]:
-        rows = read_function_object(case, "meltPoolMetrics", "meltPoolMetrics.dat")
-        header = _function_object_header(case, "meltPoolMetrics", "meltPoolMetrics.dat")
-        last = dict(zip(header, rows[-1]))
-        balances = read_balances(case / "log.ldnaFoam")
+        from .post import BeadMetrics, read_function_object_metrics
+
+        last = dict(zip(("time",) + BeadMetrics.FUNCTION_OBJECT_COLUMNS,
+                        read_function_object_metrics(case)[-1]))
         values = {name: float(last[name]) for name in self.outputs_meta if name in last}
-        values["metalMass"] = float(balances["metal_mass"][-1])
+        values["metal_mass"] = float(read_balances(case / "log.ldnaFoam")["metal_mass"][-1])
         return values
 
     def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
@@ -138,14 +139,6 @@ def detect_scene(case: Path) -> Scene:
                      "neither 'level' nor 'cellsAlongBar'); give --scene")
 
 
-def _function_object_header(case: Path, name: str, file: str) -> list[str]:
-    for path in sorted((Path(case) / "postProcessing" / name).glob(f"*/{file}")):
-        for line in path.read_text().splitlines():
-            if line.startswith("# Time"):
-                return line[1:].split()
-    raise ValueError(f"{case}: no header in postProcessing/{name}/*/{file}")
-
-
 @dataclass
 class Member:
     """One run of the study and what it cost."""
@@ -187,6 +180,8 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if end_time is not None:
         set_entry(control, "endTime", f"{end_time:g}")
     member.end_time = dictionary_scalar(case, "system/controlDict", "endTime")
+    # The end time is written (and measured there)
+    set_entry(control, "writeInterval", f"{member.end_time:g}")
     if member.max_co is not None:
         set_entry(control, "maxCo", f"{member.max_co:g}")
         set_entry(control, "maxAlphaCo", f"{member.max_co:g}")

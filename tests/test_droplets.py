@@ -28,6 +28,7 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
+from ldna.balance import WIRE_LOG_COLUMNS, wire_log
 from ldna.foamcase import (alpha_bounds, dictionary_scalar, dictionary_value,
                            read_balances, read_internal_field, run, time_directories)
 from ldna.foamdict import set_entry
@@ -62,9 +63,7 @@ def wire_mass_rate(case: Path, wire: str) -> float:
 
 def logged_wire_values(log: Path, wire: str, key: str) -> np.ndarray:
     """Per-step values the droplet source logs for a wire (added mass, on time ...)."""
-    pattern = rf"wire {wire} added mass = (\S+) kg, on time = (\S+) s, duty fraction = (\S+)"
-    column = {"added mass": 0, "on time": 1, "duty fraction": 2}[key]
-    return np.array([float(m[column]) for m in re.findall(pattern, log.read_text())])
+    return wire_log(log)[wire][:, WIRE_LOG_COLUMNS.index(key)]
 
 
 def finite_fields(time_dir: Path) -> bool:

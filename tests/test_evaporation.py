@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ldna.balance import evaporation_log
 from ldna.foamcase import (alpha_bounds, read_balances, read_internal_field, run,
                            run_parallel, time_directories)
 from ldna.foamdict import set_entry
@@ -40,12 +41,6 @@ SURFACE_AREA = 8e-3 * 8e-3
 #: Allowed error (issue 5)
 RATE_TOLERANCE = 0.02
 
-EVAPORATION = re.compile(
-    r"^evaporation \S+: mass rate = (\S+) kg/s, evaporated mass = (\S+) kg, "
-    r"latent heat = (\S+) W, heat sink = (\S+) W(?:, recoil force = \((\S+) (\S+) (\S+)\) N)?$",
-    re.M)
-
-
 def evaporation_entry(model: str, extra: str = "") -> str:
     """An fvOptions entry of the evaporation model with iron's data."""
     hertz_knudsen = (f"molarMass {MOLAR_MASS}; boilingPressure {BOILING_PRESSURE}; "
@@ -67,14 +62,6 @@ def write_fv_options(case: Path, entries: str) -> None:
     """Replace the case's fvOptions by ``entries``."""
     header = (case / "constant" / "fvOptions").read_text().split("// The test writes")[0]
     (case / "constant" / "fvOptions").write_text(header + entries + "\n")
-
-
-def evaporation_log(log: Path) -> list[tuple[float, ...]]:
-    """Per step: mass rate, evaporated mass, latent heat, heat sink (and recoil force)."""
-    rows = [tuple(float(v) for v in m.groups() if v is not None)
-            for m in EVAPORATION.finditer(log.read_text())]
-    assert rows, f"no evaporation report in {log}"
-    return rows
 
 
 def saturation_pressure(temperature: float) -> float:

@@ -28,8 +28,12 @@ from .material import Metal
 #: The template's function objects of metal volume flow through its patches
 FLOW_FUNCTION_OBJECTS = ("metalFlowIn", "metalFlowOut", "metalFlowAtmosphere")
 
-_ADDED = re.compile(r"dropletSource \S+: wire (\S+) added mass = (\S+) kg")
-_EVAPORATED = re.compile(r"evaporation \S+: mass rate = \S+ kg/s, evaporated mass = (\S+) kg")
+_WIRE = re.compile(r"dropletSource \S+: wire (\S+) added mass = (\S+) kg, on time = (\S+) s, "
+                   r"duty fraction = (\S+)")
+_EVAPORATION = re.compile(
+    r"^evaporation \S+: mass rate = (\S+) kg/s, evaporated mass = (\S+) kg, "
+    r"latent heat = (\S+) W, heat sink = (\S+) W(?:, recoil force = \((\S+) (\S+) (\S+)\) N)?$",
+    re.M)
 _SOLVE = re.compile(r"Solving for (\S+), Initial residual = (\S+), Final residual = (\S+), "
                     r"No Iterations (\d+)")
 
@@ -65,18 +69,28 @@ class MassBalance:
         return abs(self.residual) / self.turnover
 
 
-def _last_per_key(pattern: re.Pattern[str], text: str) -> dict[str, float]:
-    values: dict[str, float] = {}
-    for match in pattern.finditer(text):
-        values[match.group(1)] = float(match.group(2))
-    return values
+#: Columns of :func:`wire_log`
+WIRE_LOG_COLUMNS = ("added mass", "on time", "duty fraction")
+
+
+def wire_log(log: Path) -> dict[str, np.ndarray]:
+    """Per wire, per step: added mass [kg], on time [s], duty fraction, as dropletSource logs them."""
+    rows: dict[str, list[tuple[float, ...]]] = {}
+    for match in _WIRE.finditer(Path(log).read_text()):
+        rows.setdefault(match.group(1), []).append(tuple(float(v) for v in match.groups()[1:]))
+    return {wire: np.array(values) for wire, values in rows.items()}
+
+
+def evaporation_log(log: Path) -> list[tuple[float, ...]]:
+    """Per step: mass rate, evaporated mass, latent heat, heat sink (and recoil force)."""
+    return [tuple(float(v) for v in m.groups() if v is not None)
+            for m in _EVAPORATION.finditer(Path(log).read_text())]
 
 
 def metal_mass_balance(case: Path, log_name: str = "ldnaFoam") -> MassBalance:
     """Mass budget of the run logged in ``case/log.<log_name>``."""
     case = Path(case)
     log = case / f"log.{log_name}"
-    text = log.read_text()
     balances = read_balances(log)
     metal = Metal.from_case(case)
     if metal.density_model != "Boussinesq":
@@ -95,12 +109,12 @@ def metal_mass_balance(case: Path, log_name: str = "ldnaFoam") -> MassBalance:
         inflow -= metal.reference_density * volume[volume < 0].sum()
         outflow += metal.reference_density * volume[volume > 0].sum()
 
-    evaporated = [float(v) for v in _EVAPORATED.findall(text)]
+    evaporation = evaporation_log(log)
     return MassBalance(
         start=float(balances["metal_mass"][0]),
         end=float(balances["metal_mass"][-1]),
-        added=sum(_last_per_key(_ADDED, text).values()),
-        evaporated=evaporated[-1] if evaporated else 0.0,
+        added=float(sum(values[-1, 0] for values in wire_log(log).values())),
+        evaporated=evaporation[-1][1] if evaporation else 0.0,
         inflow=float(inflow),
         outflow=float(outflow),
     )

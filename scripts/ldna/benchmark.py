@@ -83,11 +83,7 @@ def laser_cost(level: int = 1, steps: int = 20, delta_t: float = 1e-4,
     scratch = Path(work_dir or tempfile.mkdtemp(prefix="ldna-bench-"))
     case = copy_case(TEMPLATE, scratch / "ldna")
     set_entry(case / "system" / "caseParameters", "level", str(level))
-    control = case / "system" / "controlDict"
-    set_entry(control, "adjustTimeStep", "no")
-    set_entry(control, "deltaT", f"{delta_t:g}")
-    set_entry(control, "endTime", f"{steps * delta_t:g}")
-    set_entry(control, "writeInterval", "1")
+    _fixed_steps(case, steps, delta_t)
     run(case, "blockMesh")
     run(case, "setFields")
 

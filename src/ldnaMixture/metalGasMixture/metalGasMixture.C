@@ -438,13 +438,17 @@ Foam::metalGasMixture::metalGasMixture
     // a restart takes it as written so that it continues where the run was
     // stopped
     restartedGasDensity_ = rho2_.typeHeaderOk<volScalarField>(true);
-    const volScalarField rho2Written("rho2Written", rho2_);
+    tmp<volScalarField> rho2Written;
+    if (restartedGasDensity_)
+    {
+        rho2Written = new volScalarField("rho2Written", rho2_);
+    }
 
     correctThermo();
 
     if (restartedGasDensity_)
     {
-        rho2_ = rho2Written;
+        rho2_ = rho2Written();
     }
 }
 

@@ -174,14 +174,6 @@ def test_post_writes_pictures_headless(synthetic_pool_case: Path) -> None:
     assert len(table) == 2 and table[0].startswith("time,pool_length")
 
 
-#: Why the run with a preset pool fails (issue 7 session; see README, Known limits)
-KNOWN_FAILURE_PRESET_POOL = (
-    "the energy iteration diverges at 18 ms (T to 1e7 K in gas cells holding a trace of "
-    "droplet metal, 20 iterations without convergence) since the substrate starts at the "
-    "welding speed")
-
-
-@pytest.mark.xfail(strict=True, reason=KNOWN_FAILURE_PRESET_POOL)
 def test_function_object_and_post_agree_on_a_run(ldna_case: Path) -> None:
     """The LDNA template, run briefly: metrics written in the run and read by post agree."""
     case = ldna_case

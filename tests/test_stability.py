@@ -120,11 +120,6 @@ def coarsest_mesh(case: Path) -> None:
     """The template as it is on its coarsest level (the fixture's level 0)."""
 
 
-#: Why two cases fail since old-time values are stored from the start (a
-#: one-step undershoot in a gas cell holding droplet metal, where the energy
-#: iteration ends unconverged on the wrong half of a two-cycle)
-UNDERSHOOT_FAILURE = "T undershoots to -165 K (5x laser) / -741 K (irregular start) for one step"
-
 HARD_CASES = [
     HardCase("laser_power_x5", five_times_laser_power, end_time=0.015, level=1),
     HardCase("droplets_x3_faster", droplets_three_times_faster),
@@ -145,13 +140,7 @@ def run_scene(case: Path, hard_case: HardCase) -> None:
     run(case, "ldnaFoam")
 
 
-KNOWN_FAILURES = {"laser_power_x5", "irregular_start_8x_droplets"}
-
-
-@pytest.mark.parametrize("hard_case", [
-    pytest.param(c, marks=pytest.mark.xfail(strict=True, reason=UNDERSHOOT_FAILURE))
-    if c.name in KNOWN_FAILURES else c for c in HARD_CASES
-], ids=[c.name for c in HARD_CASES])
+@pytest.mark.parametrize("hard_case", HARD_CASES, ids=[c.name for c in HARD_CASES])
 def test_hard_case_stays_stable(ldna_case: Path, hard_case: HardCase) -> None:
     case = ldna_case
     run_scene(case, hard_case)

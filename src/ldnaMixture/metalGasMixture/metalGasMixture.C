@@ -611,7 +611,8 @@ Foam::metalGasMixture::volumetricEnthalpy() const
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
 (
     const scalarField& m1,
-    const scalarField& m2
+    const scalarField& m2,
+    const scalarField& m1Latent
 ) const
 {
     tmp<volScalarField> tC(Cp1());
@@ -624,7 +625,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
     {
         C[celli] =
             m1[celli]*C[celli] + m2[celli]*Cp2Field[celli]
-          + latentSlope(celli, m1[celli]);
+          + latentSlope(celli, m1Latent[celli]);
     }
     C.boundaryFieldRef() = Zero;
 

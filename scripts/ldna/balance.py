@@ -36,6 +36,9 @@ _EVAPORATION = re.compile(
     re.M)
 _SOLVE = re.compile(r"Solving for (\S+), Initial residual = (\S+), Final residual = (\S+), "
                     r"No Iterations (\d+)")
+#: The energy iteration's report of each time step (applications/solvers/ldnaFoam/TEqn.H)
+_ENERGY_CONVERGED = re.compile(r"^Energy: converged in (\d+) iterations", re.M)
+_ENERGY_UNCONVERGED = re.compile(r"^Energy: not converged in \d+ iterations", re.M)
 
 #: OpenFOAM's default maximum number of linear-solver iterations (lduMatrix)
 DEFAULT_MAX_ITER = 1000
@@ -122,12 +125,16 @@ def metal_mass_balance(case: Path, log_name: str = "ldnaFoam") -> MassBalance:
 
 @dataclass(frozen=True)
 class SolverHealth:
-    """What the linear solvers reported over a run."""
+    """What the linear solvers and the energy iteration reported over a run."""
 
     solves: int
     max_iterations: int
     worst_final_residual: float
     all_finite: bool
+    #: Time steps whose energy iteration ended at its limit unconverged
+    energy_unconverged: int
+    #: Most energy iterations a converged step took
+    max_energy_iterations: int
 
     def diverged(self, max_iter: int = DEFAULT_MAX_ITER) -> bool:
         """A solve hit the iteration limit or produced a non-finite residual."""
@@ -135,15 +142,19 @@ class SolverHealth:
 
 
 def solver_health(log: Path) -> SolverHealth:
-    """Iterations and residuals of every linear solve in a solver log."""
-    solves = _SOLVE.findall(Path(log).read_text())
+    """Iterations and residuals of every linear solve and energy iteration in a solver log."""
+    text = Path(log).read_text()
+    solves = _SOLVE.findall(text)
     if not solves:
         raise ValueError(f"{log}: no linear solves logged")
     finals = [float(final) for _, _, final, _ in solves]
     initials = [float(initial) for _, initial, _, _ in solves]
+    energy_converged = [int(n) for n in _ENERGY_CONVERGED.findall(text)]
     return SolverHealth(
         solves=len(solves),
         max_iterations=max(int(n) for *_, n in solves),
         worst_final_residual=max(finals),
         all_finite=all(math.isfinite(v) for v in finals + initials),
+        energy_unconverged=len(_ENERGY_UNCONVERGED.findall(text)),
+        max_energy_iterations=max(energy_converged, default=0),
     )

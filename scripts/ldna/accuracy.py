@@ -29,7 +29,8 @@ from typing import Protocol
 import numpy as np
 
 from . import meshing
-from .foamcase import copy_case, dictionary_scalar, read_balances, run, time_directories
+from .foamcase import (copy_case, dictionary_scalar, read_balances, run, run_parallel,
+                       time_directories)
 from .foamdict import read_scalars, set_entry
 from .stefan import NeumannSolution, front_position
 
@@ -101,7 +102,7 @@ class StefanScene:
     outputs_meta = {"front": ("melting front position", "mm", 1e3)}
     #: 25 cells (0.8 mm) doubled per level; level 3 is the case's 0.1 mm
     default_levels = (0.0, 1.0, 2.0, 3.0, 4.0)
-    #: Cells along the 20 mm bar and time step at level 0; both halve per
+    #: Cells along the bar and time step at level 0; both halve per
     #: level, so that the first-order time error falls with the space error
     level0_cells = 25
     level0_delta_t = 16e-3
@@ -111,8 +112,7 @@ class StefanScene:
         cells = round(self.level0_cells * 2**level)
         set_entry(parameters, "cellsAlongBar", str(cells))
         set_entry(parameters, "deltaT", f"{self.level0_delta_t / 2**level:.9g}")
-        length_mm = 20.0
-        return length_mm / cells
+        return read_scalars(parameters)["barLength"] / cells
 
     def prepare(self, case: Path) -> None:
         run(case, "blockMesh")
@@ -192,11 +192,9 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if n_procs > 1:
         set_entry(case / "system" / "decomposeParDict", "numberOfSubdomains", str(n_procs))
         run(case, "decomposePar -force")
-        command = f"mpirun -np {n_procs} ldnaFoam -parallel"
-    else:
-        command = "ldnaFoam"
     start = time.perf_counter()
-    result = run(case, command, log_name="ldnaFoam")
+    result = (run_parallel(case, "ldnaFoam", n_procs) if n_procs > 1
+              else run(case, "ldnaFoam"))
     member.wall_time = time.perf_counter() - start
     if n_procs > 1:
         run(case, "reconstructPar -latestTime")

@@ -114,7 +114,6 @@ def print_costs(costs: list[StepCost], level: int) -> None:
 #: The paper's configuration: about 690,000 cells with 0.15 mm at the free
 #: surface (the template's level 3 has 665,000)
 PAPER_CELLS = 690_000
-PAPER_LEVEL = 3
 #: Time step of the template's solution at a level, from its capillary limit
 #: sqrt(rho dx^3 / (2 pi sigma)), which scales as dx^1.5 [s]
 CAPILLARY_EXPONENT = 1.5

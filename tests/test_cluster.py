@@ -1,17 +1,23 @@
 """The cluster workflow of the template: its SLURM batch script and Allrun -parallel.
 
 Without a SLURM scheduler the batch script runs as SLURM would start it:
-with bash, in the submit directory, with SLURM_NTASKS set.  Both must
-decompose the case, run ldnaFoam on the ranks, reconstruct the fields and
-leave the bead metrics in postProcessing/.
+with bash, in the submit directory, with SLURM_NTASKS set, in a clean
+environment where only LDNA_DIR points to the checkout.  Both must decompose
+the case, run ldnaFoam on the ranks, reconstruct the fields and leave the
+bead metrics in postProcessing/; Allclean removes the results.
 """
 from __future__ import annotations
 
 from pathlib import Path
 
-from ldna.foamcase import run, time_directories
+import pytest
+
+from ldna.foamcase import PROJECT_DIR, run, time_directories
 from ldna.foamdict import set_entry
 from ldna.post import read_function_object_metrics
+from userpath import run_as_user
+
+pytestmark = pytest.mark.user_path
 
 #: Simulated time of the shortened scene [s] (some 20 steps at level 0)
 END_TIME = "0.005"
@@ -37,8 +43,9 @@ def check_parallel_run(case: Path) -> None:
 def test_slurm_batch_script(ldna_case: Path) -> None:
     case = ldna_case
     shorten(case)
-    run(case, f"SLURM_NTASKS={N_RANKS} SLURM_SUBMIT_DIR={case} bash ldna.sbatch",
-        log_name="sbatch")
+    outcome = run_as_user("bash ldna.sbatch", cwd=case, SLURM_NTASKS=str(N_RANKS),
+                          SLURM_SUBMIT_DIR=str(case), LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output[-3000:]
     check_parallel_run(case)
 
 
@@ -47,5 +54,10 @@ def test_template_allrun_parallel(ldna_case: Path) -> None:
     shorten(case)
     run(case, f"foamDictionary -entry numberOfSubdomains -set {N_RANKS} system/decomposeParDict",
         log_name="foamDictionary")
-    run(case, "./Allrun -parallel", log_name="Allrun")
+    outcome = run_as_user("./Allrun -parallel", cwd=case, LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output[-3000:]
     check_parallel_run(case)
+    outcome = run_as_user("./Allclean", cwd=case, LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output
+    assert [t.name for t in time_directories(case)] == ["0"]
+    assert not (case / "processor0").exists()

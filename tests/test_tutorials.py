@@ -1,10 +1,11 @@
-"""Second tier: every tutorial's Allrun, shortened to a few time steps.
+"""Every tutorial's Allrun as a user runs it, shortened to a few time steps.
 
 Each tutorial is copied to a temporary directory, its end time set to a few
 initial time steps (the OpenFOAM way: in the copy's system/controlDict), and
-its Allrun executed; the solver must finish without a fatal error and with
-bounded fields.  The main LDNA scene also runs its Allrun-parallel.  Physics
-is asserted by the first-tier tests.
+its Allrun executed from a plain shell with nothing sourced (marker
+``user_path``); the solver must finish without a fatal error and with bounded
+fields, and Allclean must remove what it made.  The main LDNA scene also runs
+its Allrun-parallel.  Physics is asserted by the first-tier tests.
 """
 from __future__ import annotations
 
@@ -14,6 +15,9 @@ from pathlib import Path
 import pytest
 
 from ldna.foamcase import PROJECT_DIR, alpha_bounds, read_balances, run
+from userpath import run_as_user
+
+pytestmark = pytest.mark.user_path
 
 #: Time steps of a shortened tutorial (at the initial step size)
 SMOKE_STEPS = 10
@@ -59,7 +63,9 @@ def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:
     case = Path(shutil.copytree(tutorial, tmp_path / tutorial.name,
                                 ignore=shutil.ignore_patterns("run")))
     shorten(case, SMOKE_STEPS)
-    run(case, f"./{script}", log_name=script)
+    # A copy outside the checkout finds it through LDNA_DIR, as a user's would
+    outcome = run_as_user(f"./{script}", cwd=case, LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output[-3000:]
     for log in case.rglob("log.*"):
         assert "FOAM FATAL" not in log.read_text(errors="replace"), log.name
     solver_logs = list(case.rglob("log.ldnaFoam"))
@@ -77,6 +83,10 @@ def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:
 @pytest.mark.parametrize("tutorial", tutorial_params("Allrun"))
 def test_tutorial_runs(tutorial: Path, tmp_path: Path) -> None:
     run_shortened(tutorial, tmp_path, "Allrun")
+    case = tmp_path / tutorial.name
+    outcome = run_as_user("./Allclean", cwd=case, LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output
+    assert not (case / "run").exists()
 
 
 @pytest.mark.parametrize("tutorial", tutorial_params("Allrun-parallel", ["ldna"]))

@@ -104,8 +104,7 @@ int main(int argc, char *argv[])
 
         #include "metalVolumeCorrection.H"
         #include "reportBalances.H"
-
-        runTime.write();
+        #include "write.H"
 
         runTime.printExecutionTime(Info);
     }

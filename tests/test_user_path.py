@@ -1,0 +1,158 @@
+"""The README's commands as a user types them (marker ``user_path``).
+
+Each command runs in a clean environment (``env -i``, HOME and a minimal
+PATH), from a plain shell and from one with OpenFOAM already sourced: the
+main scene ``bin/ldna-scene`` end to end and ``ldna post`` on its result,
+a run that fails and the attempt after it, and every ``bin/`` script's
+``--help`` and its refusal of bad options.  The tutorials and the template's
+``Allrun`` scripts run in the same clean environment in test_tutorials and
+test_cluster.
+"""
+from __future__ import annotations
+
+import os
+import re
+import signal
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+from ldna.foamcase import PROJECT_DIR, time_directories
+from userpath import SHELLS, clean_env, run_as_user
+
+pytestmark = pytest.mark.user_path
+
+#: Simulated time of the short scene [s]: not a multiple of the template's
+#: write interval, so the last time must be written by the end-of-run rule
+END_TIME = 0.005
+
+#: What a second run on an installed, built machine must leave untouched
+BUILD_PRODUCTS = ["build/bin/ldnaFoam", "build/lib/libldnaMixture.so",
+                  "build/lib/libldnaModels.so", "build/lib/libldnaFunctionObjects.so",
+                  "build/venv/.ldna-ready", "build/openfoam-env.sh"]
+
+
+def scene_command(case: Path, end_time: float = END_TIME) -> str:
+    """The README's main command with a short end time, on 2 ranks, into ``case``."""
+    return f"bin/ldna-scene --level 0 --end-time {end_time} --np 2 --dir {case}"
+
+
+def build_stamps() -> dict[str, int]:
+    return {path: (PROJECT_DIR / path).stat().st_mtime_ns for path in BUILD_PRODUCTS}
+
+
+def last_reconstructed_time(case: Path) -> float:
+    times = [t for t in time_directories(case) if float(t.name) > 0 and (t / "T").exists()]
+    assert times, f"no reconstructed time directory in {case}"
+    return float(times[-1].name)
+
+
+def last_solved_time(case: Path) -> float:
+    """The time of the solver's last step, from its log."""
+    return float(re.findall(r"^Time = (\S+)$", (case / "log.ldnaFoam").read_text(), re.M)[-1])
+
+
+@pytest.mark.parametrize("shell", list(SHELLS))
+def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
+    case = tmp_path / "scene"
+    before = build_stamps()
+
+    scene = run_as_user(scene_command(case), shell=shell)
+
+    assert scene.returncode == 0, scene.output[-3000:]
+    assert "[ldna-install]" not in scene.output, "an installed machine installs nothing"
+    assert build_stamps() == before, "a built machine rebuilds nothing"
+    # The last step is written whatever the write interval; OpenFOAM ends a
+    # run within half a step of the end time
+    assert last_reconstructed_time(case) == last_solved_time(case)
+    assert last_solved_time(case) > 0.8 * END_TIME
+    assert (case / "ldna.foam").exists()
+    assert "bead width" in scene.output and "peak metal T" in scene.output
+    assert f"Results: {case}" in scene.output
+
+    post = run_as_user(f"build/venv/bin/ldna post {case}", shell=shell)
+    assert post.returncode == 0, post.output[-3000:]
+    for picture in ("surface.png", "transverse.png", "longitudinal.png"):
+        assert (case / "pictures" / picture).stat().st_size > 10_000, picture
+
+
+def _kill_solver_in(directory: Path) -> int:
+    """SIGKILL the ldnaFoam processes running in ``directory``."""
+    killed = 0
+    for proc in Path("/proc").iterdir():
+        if not proc.name.isdigit():
+            continue
+        try:
+            if (proc / "comm").read_text().strip() == "ldnaFoam" \
+                    and Path(os.readlink(proc / "cwd")) == directory:
+                os.kill(int(proc.name), signal.SIGKILL)
+                killed += 1
+        except (OSError, ValueError):
+            continue
+    return killed
+
+
+def test_failed_scene_does_not_block_the_next_attempt(tmp_path: Path) -> None:
+    case = tmp_path / "scene"
+    command = scene_command(case, end_time=1.0)
+    env_args = [f"{k}={v}" for k, v in clean_env().items()]
+    scene = subprocess.Popen(["env", "-i", *env_args, "bash", "-c", command], cwd=PROJECT_DIR,
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    # The solver is killed once it is running, as a cluster kills a job
+    log = case / "log.ldnaFoam"
+    deadline = time.monotonic() + 600
+    while not (log.exists() and log.read_text(errors="replace").count("\nTime = ") > 2):
+        assert scene.poll() is None, scene.communicate()[0][-3000:]
+        assert time.monotonic() < deadline, "the solver did not start"
+        time.sleep(0.5)
+    assert _kill_solver_in(case) > 0
+    output = scene.communicate(timeout=300)[0]
+
+    assert scene.returncode != 0
+    assert "ldnaFoam failed" in output and "ldna-scene: the case's Allrun -parallel failed" in output
+    failed = tmp_path / "scene.failed"
+    assert f"kept in {failed}" in output
+    assert (failed / "log.ldnaFoam").exists() and not case.exists()
+
+    retry = run_as_user(scene_command(case))
+    assert retry.returncode == 0, retry.output[-3000:]
+    assert last_reconstructed_time(case) == last_solved_time(case)
+
+
+BIN_SCRIPTS = ["bin/ldna-scene", "bin/ldna-test", "bin/ldna-install", "bin/ldna-env"]
+
+
+@pytest.mark.parametrize("script", BIN_SCRIPTS)
+def test_bin_script_help(script: str) -> None:
+    outcome = run_as_user(f"{script} --help")
+    assert outcome.returncode == 0, outcome.output
+    assert script.split("/")[-1].replace("ldna-", "") in outcome.output.lower()
+    assert "Traceback" not in outcome.output
+
+
+BAD_OPTIONS = [
+    ("bin/ldna-scene", "--np 0", "--np"),
+    ("bin/ldna-scene", "--np two", "--np"),
+    ("bin/ldna-scene", "--level 7", "--level"),
+    ("bin/ldna-scene", "--end-time -1", "--end-time"),
+    ("bin/ldna-scene", "--end-time nan", "--end-time"),
+    ("bin/ldna-scene", "--end-time", "needs a value"),
+    ("bin/ldna-scene", "--dir cases/ldna", "exists"),
+    ("bin/ldna-scene", "--levle 1", "unknown option"),
+    ("bin/ldna-test", "--fast", "unknown option"),
+    ("bin/ldna-test", "-k", "needs a value"),
+    ("bin/ldna-install", "--yes", "unknown option"),
+    ("bin/ldna-env", "--yes", "unknown option"),
+]
+
+
+@pytest.mark.parametrize("script,options,message", BAD_OPTIONS,
+                         ids=[f"{s.split('/')[-1]} {o}" for s, o, _ in BAD_OPTIONS])
+def test_bin_script_rejects_bad_options(script: str, options: str, message: str) -> None:
+    outcome = run_as_user(f"{script} {options}", timeout=60)
+    assert outcome.returncode != 0
+    lines = outcome.output.strip().splitlines()
+    assert len(lines) == 1, outcome.output
+    assert message in lines[0]

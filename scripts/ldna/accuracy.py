@@ -264,7 +264,7 @@ def write_csv(study: Study, path: Path) -> None:
         for m in study.members:
             writer.writerow(
                 [meshing.level_name(m.level), "" if m.max_co is None else f"{m.max_co:g}",
-                 f"{m.cell_size_mm:.6g}", m.cells, m.n_procs, m.steps, f"{m.wall_time:.3f}",
+                 f"{m.cell_size_mm:.6g}", m.cells, m.n_procs, m.steps, f"{m.wall_time:.6g}",
                  f"{m.core_seconds_per_ms:.6g}"]
                 + [f"{m.outputs.get(n, math.nan) * study.scene.outputs_meta[n][2]:.8g}"
                    for n in names]

@@ -5,11 +5,15 @@ import argparse
 import sys
 from pathlib import Path
 
-from . import benchmark, meshing
+from . import benchmark, meshing, process_zone
 
 
 def _mesh_levels(args: argparse.Namespace) -> int:
-    for path in meshing.write_mesh_levels(Path(args.case)):
+    case = Path(args.case)
+    # A case with a refined process zone (tutorials/ldnaBead) counts its
+    # base cells and refinement levels; the template its graded blocks
+    levels = process_zone if (case / "system" / "snappyHexMeshDict").exists() else meshing
+    for path in levels.write_mesh_levels(case):
         print(path)
     return 0
 

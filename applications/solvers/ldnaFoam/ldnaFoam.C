@@ -40,6 +40,7 @@ Description
 #include "metalGasMixture.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
+#include "metalInsertion.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -103,6 +104,7 @@ int main(int argc, char *argv[])
         }
 
         #include "metalVolumeCorrection.H"
+        #include "insertMetal.H"
         #include "reportBalances.H"
         #include "write.H"
 

@@ -679,11 +679,16 @@ void Foam::metalGasMixture::correctCurvature()
 Foam::tmp<Foam::surfaceScalarField>
 Foam::metalGasMixture::surfaceTensionForce() const
 {
+    // Capillary force on liquid metal only: a solid surface does not flow,
+    // and the force on its frozen shape would fight the porosity sink
     tmp<surfaceScalarField> tforce
     (
-        curvatureSmoothing_ == 0
-      ? interfaceProperties::surfaceTensionForce()
-      : fvc::interpolate(sigma())*curvaturef_*fvc::snGrad(alpha1())
+        fvc::interpolate(max(min(liquidFraction_, scalar(1)), scalar(0)))
+       *(
+            curvatureSmoothing_ == 0
+          ? interfaceProperties::surfaceTensionForce()
+          : fvc::interpolate(sigma())*curvaturef_*fvc::snGrad(alpha1())
+        )
     );
 
     const fvMesh& mesh = alpha1().mesh();

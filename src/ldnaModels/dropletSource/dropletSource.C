@@ -9,6 +9,7 @@
 #include "fvmSup.H"
 #include "boundBox.H"
 #include "unitConversion.H"
+#include "isoCutCell.H"
 #include "addToRunTimeSelectionTable.H"
 
 using Foam::constant::mathematical::pi;
@@ -111,15 +112,32 @@ void Foam::fv::dropletSource::readCoeffs()
         &spacingIncrease
     );
 
+    const word mode = coeffs_.lookupOrDefault<word>("mode", "gaussian");
+    if (mode != "insertion" && mode != "gaussian")
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry 'mode' must be insertion or gaussian, not " << mode
+            << exit(FatalIOError);
+    }
+    insertion_ = (mode == "insertion");
+
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     UName_ = coeffs_.lookupOrDefault<word>("U", "U");
     TName_ = coeffs_.lookupOrDefault<word>("T", "T");
     log_ = coeffs_.lookupOrDefault<bool>("log", true);
 
-    fieldNames_.setSize(3);
-    fieldNames_[0] = alphaName_;
-    fieldNames_[1] = UName_;
-    fieldNames_[2] = TName_;
+    // Inserted droplets are no source in any equation
+    if (insertion_)
+    {
+        fieldNames_.clear();
+    }
+    else
+    {
+        fieldNames_.setSize(3);
+        fieldNames_[0] = alphaName_;
+        fieldNames_[1] = UName_;
+        fieldNames_[2] = TName_;
+    }
     applied_.setSize(fieldNames_.size(), false);
 
     const scalar wireDensity =
@@ -231,15 +249,21 @@ void Foam::fv::dropletSource::readCoeffs()
                 << wire.longitudinalSign << exit(FatalIOError);
         }
 
-        wire.regular = footprint(wire, wire.position, wire.dropletRadius);
-        if (irregularStart)
+        wire.irregularPosition =
+            wire.position + k*irregularSpacingIncrease_*spacingDirection;
+        checkResolution(wire);
+        if (!insertion_)
         {
-            wire.irregular = footprint
-            (
-                wire,
-                wire.position + k*irregularSpacingIncrease_*spacingDirection,
-                irregularDiameterFactor_*wire.dropletRadius
-            );
+            wire.regular = footprint(wire, wire.position, wire.dropletRadius);
+            if (irregularStart)
+            {
+                wire.irregular = footprint
+                (
+                    wire,
+                    wire.irregularPosition,
+                    irregularDiameterFactor_*wire.dropletRadius
+                );
+            }
         }
 
         wire.addedMass = 0;
@@ -253,7 +277,8 @@ void Foam::fv::dropletSource::readCoeffs()
             << wire.enthalpy << " J/kg), source at " << wire.position
             << ", duty fraction " << dutyFraction()
             << ", pulse mass rate " << wire.massRate()/dutyFraction()
-            << " kg/s" << endl;
+            << " kg/s, " << (insertion_ ? "inserted as spheres" : "Gaussian")
+            << endl;
 
         ++k;
     }
@@ -331,6 +356,248 @@ Foam::fv::dropletSource::footprint
         << (resolved ? "" : " (unresolved: one cell)") << endl;
 
     return fp;
+}
+
+
+void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
+{
+    // Cell size at the droplet source: the cube root of the volume of the
+    // cell that holds the wire tip
+    const label celli = mesh_.findCell(wire.position);
+    const scalar cellSize = returnReduce
+    (
+        celli != -1 ? cbrt(mesh_.V()[celli]) : GREAT,
+        minOp<scalar>()
+    );
+    if (cellSize == GREAT)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "The droplet source of wire " << wire.name << " at "
+            << wire.position << " m is outside the mesh, whose bounds are "
+            << boundBox(mesh_.points(), true) << exit(FatalIOError);
+    }
+
+    const scalar R = wire.dropletRadius;
+    const scalar cellsPerRadius = R/cellSize;
+
+    // Process-zone cells of the LDNA template: 0.45 mm/2^level
+    // (cases/ldna/system/caseParameters)
+    const scalar templateLevel0Cell = 0.45e-3;
+    auto levelFor = [&](const scalar perRadius)
+    {
+        return max(label(0), label(ceil(log2(templateLevel0Cell*perRadius/R))));
+    };
+
+    if (insertion_ && cellsPerRadius < minCellsPerRadius)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Droplets of wire " << wire.name << " (radius " << R
+            << " m) span " << cellsPerRadius << " cells of " << cellSize
+            << " m at their source " << wire.position << ": inserting them"
+            << " as spheres needs at least " << minCellsPerRadius
+            << " cells per radius, cells of at most "
+            << R/minCellsPerRadius << " m (in the LDNA template: level "
+            << levelFor(minCellsPerRadius) << " or finer)"
+            << exit(FatalIOError);
+    }
+    if (cellsPerRadius < resolvedCellsPerRadius)
+    {
+        WarningInFunction
+            << "Droplets of wire " << wire.name << " (radius " << R
+            << " m) span " << cellsPerRadius << " cells of " << cellSize
+            << " m at their source: the droplet shape is under-resolved"
+            << " (fewer than " << resolvedCellsPerRadius
+            << " cells per radius; cells of at most "
+            << R/resolvedCellsPerRadius << " m resolve it, in the LDNA"
+            << " template level " << levelFor(resolvedCellsPerRadius) << ")"
+            << endl;
+    }
+}
+
+
+Foam::scalar Foam::fv::dropletSource::radiusAt
+(
+    const wireStream& wire,
+    const scalar t
+) const
+{
+    return
+        t < irregularityTime_
+      ? irregularDiameterFactor_*wire.dropletRadius
+      : wire.dropletRadius;
+}
+
+
+Foam::vector Foam::fv::dropletSource::centreAt
+(
+    const wireStream& wire,
+    const scalar t
+) const
+{
+    return t < irregularityTime_ ? wire.irregularPosition : wire.position;
+}
+
+
+Foam::List<Foam::scalar> Foam::fv::dropletSource::pulseOnsets
+(
+    const scalar nu,
+    const scalar t0,
+    const scalar t1
+) const
+{
+    // A pulse starts where the phase 2 pi nu t + xi passes asin(theta)
+    // + 2 pi k
+    const scalar a = asin(switchThreshold_);
+    const scalar k0 = floor((twoPi*nu*t0 + switchPhase_ - a)/twoPi);
+    const scalar k1 = floor((twoPi*nu*t1 + switchPhase_ - a)/twoPi);
+
+    List<scalar> onsets(label(k1 - k0));
+    forAll(onsets, i)
+    {
+        onsets[i] = (a + twoPi*(k0 + 1 + i) - switchPhase_)/(twoPi*nu);
+    }
+    return onsets;
+}
+
+
+Foam::scalar Foam::fv::dropletSource::insertSphere
+(
+    metalGasMixture& mixture,
+    volVectorField& U,
+    const wireStream& wire,
+    const vector& centre,
+    const scalar R,
+    const vector& velocity
+) const
+{
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+
+    // The sphere is the iso-surface -R of minus the distance from its
+    // centre at the mesh points; isoCutCell gives each cell's "submerged"
+    // volume fraction, where the point values exceed the iso-value (the
+    // liquid side in isoAdvection): inside the sphere
+    scalarField minusDistance(-mag(mesh_.points() - centre));
+    isoCutCell cutter(mesh_, minusDistance);
+
+    DynamicList<label> cells;
+    DynamicList<scalar> fractions;
+    forAll(C, celli)
+    {
+        // Cells whose centre is within R plus the cell's size
+        if (mag(C[celli] - centre) > R + 2*cbrt(V[celli]))
+        {
+            continue;
+        }
+        const label status = cutter.calcSubCell(celli, -R);
+        const scalar f =
+            status == -1 ? 1 : (status == 1 ? 0 : cutter.volumeOfFluid());
+        if (f > 0)
+        {
+            cells.append(celli);
+            fractions.append(f);
+        }
+    }
+
+    // The cut cells take what the full ones leave of the exact volume, in
+    // proportion to their fractions; a cut cell the scaling would overfill
+    // is filled, and the rest shared again among the others
+    const scalar exactVolume = 4.0/3.0*pi*pow3(R);
+    forAll(fractions, i)
+    {
+        fractions[i] = min(fractions[i], scalar(1));
+    }
+    for (label pass = 0; pass < 20; ++pass)
+    {
+        scalar fixedVolume = 0;
+        scalar scalableVolume = 0;
+        forAll(cells, i)
+        {
+            (fractions[i] < 1 ? scalableVolume : fixedVolume) +=
+                fractions[i]*V[cells[i]];
+        }
+        reduce(fixedVolume, sumOp<scalar>());
+        reduce(scalableVolume, sumOp<scalar>());
+        if (!(scalableVolume > 0))
+        {
+            break;
+        }
+        const scalar scale =
+            max(exactVolume - fixedVolume, scalar(0))/scalableVolume;
+        forAll(fractions, i)
+        {
+            if (fractions[i] < 1)
+            {
+                fractions[i] = min(scale*fractions[i], scalar(1));
+            }
+        }
+        if (mag(scale - 1) < 1e-12)
+        {
+            break;
+        }
+    }
+
+    volScalarField& alpha1 = mixture.alpha1();
+    volScalarField& T = mixture.T();
+    volScalarField& gl = mixture.liquidFraction();
+    const volScalarField& rho1 = mixture.rho1();
+    const volScalarField& rho2 = mixture.rho2();
+    const scalar L = mixture.latentHeat();
+
+    scalar mass = 0;
+    forAll(cells, i)
+    {
+        const label celli = cells[i];
+        const scalar f = fractions[i];
+
+        // The droplet displaces the gas it takes the place of
+        const scalar a = alpha1[celli];
+        const scalar dAlpha = f*(1 - a);
+        const scalar aNew = a + dAlpha;
+        const scalar r1 = rho1[celli];
+        const scalar r2 = rho2[celli];
+
+        // Momentum and enthalpy per unit volume, before and after
+        const scalar rhoOld = a*r1 + (1 - a)*r2;
+        const scalar rhoNew = rhoOld + dAlpha*(r1 - r2);
+        U[celli] =
+            (
+                (rhoOld - dAlpha*r2)*U[celli] + dAlpha*r1*velocity
+            )/rhoNew;
+
+        const scalar T0 = T[celli];
+        const scalar hGas0 = mixture.gasSensibleEnthalpy(T0);
+        const scalar E =
+            a*r1*(mixture.metalSensibleEnthalpy(T0) + gl[celli]*L)
+          + (1 - a - dAlpha)*r2*hGas0
+          + dAlpha*r1*wire.enthalpy;
+
+        // The temperature of that enthalpy (monotonic in T), by bisection
+        auto enthalpyAt = [&](const scalar Tc)
+        {
+            return
+                aNew*r1
+               *(
+                    mixture.metalSensibleEnthalpy(Tc)
+                  + mixture.equilibriumLiquidFraction(Tc)*L
+                )
+              + (1 - aNew)*r2*mixture.gasSensibleEnthalpy(Tc);
+        };
+        scalar Tlow = min(T0, wire.temperature) - 1;
+        scalar Thigh = max(T0, wire.temperature) + 1;
+        for (label iter = 0; iter < 60; ++iter)
+        {
+            const scalar Tmid = 0.5*(Tlow + Thigh);
+            (enthalpyAt(Tmid) < E ? Tlow : Thigh) = Tmid;
+        }
+        T[celli] = 0.5*(Tlow + Thigh);
+        gl[celli] = mixture.equilibriumLiquidFraction(T[celli]);
+        alpha1[celli] = aNew;
+
+        mass += dAlpha*r1*V[celli];
+    }
+
+    return returnReduce(mass, sumOp<scalar>());
 }
 
 
@@ -489,6 +756,7 @@ Foam::fv::dropletSource::dropletSource
     irregularityTime_(0),
     irregularDiameterFactor_(1),
     irregularSpacingIncrease_(0),
+    insertion_(false),
     log_(true),
     timeIndex_(-1),
     massSource_(mesh.nCells(), Zero),
@@ -552,6 +820,54 @@ void Foam::fv::dropletSource::addSup
     update();
 
     eqn += cellSource(eqn, name_ + ":momentumSource", momentumSource_);
+}
+
+
+bool Foam::fv::dropletSource::insert
+(
+    metalGasMixture& mixture,
+    volVectorField& U
+)
+{
+    if (!insertion_)
+    {
+        return false;
+    }
+
+    const Time& time = mesh_.time();
+    const scalar t1 = time.value();
+    const scalar t0 = t1 - time.deltaTValue();
+
+    bool inserted = false;
+    for (wireStream& wire : wires_)
+    {
+        for (const scalar onset : pulseOnsets(wire.frequency, t0, t1))
+        {
+            wire.addedMass += insertSphere
+            (
+                mixture,
+                U,
+                wire,
+                centreAt(wire, onset),
+                radiusAt(wire, onset),
+                dropletVelocity(wire, onset)
+            );
+            inserted = true;
+        }
+        wire.onTime += switchOnTime(wire.frequency, t0, t1);
+
+        if (log_)
+        {
+            const scalar elapsed = t1 - time.startTime().value();
+            Info<< type() << ' ' << name_ << ": wire " << wire.name
+                << " added mass = " << wire.addedMass
+                << " kg, on time = " << wire.onTime
+                << " s, duty fraction = "
+                << (elapsed > 0 ? wire.onTime/elapsed : 0) << endl;
+        }
+    }
+
+    return inserted;
 }
 
 

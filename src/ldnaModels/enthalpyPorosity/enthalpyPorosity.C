@@ -39,14 +39,6 @@ void Foam::fv::enthalpyPorosity::readCoeffs()
             << porosityEpsilon_ << exit(FatalIOError);
     }
 
-    alphaMin_ = coeffs_.lookupOrDefault<scalar>("alphaMin", 0.5);
-    if (!(alphaMin_ >= 0 && alphaMin_ < 1))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'alphaMin' must be in [0, 1), not " << alphaMin_
-            << exit(FatalIOError);
-    }
-
     weldingSpeed_ = Function1<scalar>::New("weldingSpeed", coeffs_);
     {
         const scalar vw = weldingSpeed_->value(mesh_.time().value());
@@ -92,7 +84,6 @@ Foam::fv::enthalpyPorosity::enthalpyPorosity
     cellSetOption(sourceName, modelType, dict, mesh),
     mushyZoneConstant_(0),
     porosityEpsilon_(0),
-    alphaMin_(0),
     weldingSpeed_(),
     weldingDirection_(Zero)
 {
@@ -139,14 +130,15 @@ void Foam::fv::enthalpyPorosity::addSup
         dimensionedScalar(dimDensity/dimTime, Zero)
     );
 
+    // Every cell that holds metal, in proportion to its metal: a thin solid
+    // film or a frozen splash is held as firmly per unit of metal as the
+    // substrate (a threshold on alpha let films below it drift freely)
     for (const label celli : cells_)
     {
-        if (alpha[celli] > alphaMin_)
-        {
-            const scalar gl = min(max(liquidFraction[celli], 0), 1);
-            coeff[celli] =
-                mushyZoneConstant_*sqr(1 - gl)/(pow3(gl) + porosityEpsilon_);
-        }
+        const scalar metal = min(max(alpha[celli], scalar(0)), scalar(1));
+        const scalar gl = min(max(liquidFraction[celli], scalar(0)), scalar(1));
+        coeff[celli] =
+            metal*mushyZoneConstant_*sqr(1 - gl)/(pow3(gl) + porosityEpsilon_);
     }
 
     const dimensionedVector Us

@@ -4,7 +4,13 @@
   on the mesh is exactly 4/3 pi R^3 (1 %), the metal fraction stays bounded
   and the solver's metal mass equals the mass the source reports;
 - a droplet radius of fewer than 1.5 cells stops insertion with an error
-  naming the cell size and the level that would do.
+  naming the cell size and the level that would do;
+- with three cells per droplet radius (the template's level 1) a droplet
+  flies as a body: metal fraction >= 0.99 in its cells 2 ms after it left
+  the wire tip;
+- the LDNA template at level 0, briefly, on a substrate preheated under the
+  process: droplets fly as bodies of metal (cells more than half metal) and
+  a pool melts into the substrate.
 """
 from __future__ import annotations
 
@@ -17,9 +23,10 @@ import pytest
 
 from conftest import prepare_test_case
 from ldna.balance import WIRE_LOG_COLUMNS, wire_log
-from ldna.foamcase import (alpha_bounds, read_balances, read_internal_field, run,
-                           time_directories)
+from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances, read_internal_field,
+                           run, time_directories)
 from ldna.foamdict import set_entry
+from ldna.meshing import mesh_case
 
 VOLUME_TOLERANCE = 0.01
 ALPHA_BOUND = 1e-6
@@ -87,3 +94,82 @@ def test_insertion_stops_on_unresolved_droplets(tmp_path: Path) -> None:
     assert "FOAM FATAL IO ERROR" in text and "Segmentation" not in text
     assert "at least 1.5 cells per radius" in text and "level 0 or finer" in text
     assert "wireDroplets" in text
+
+
+
+#: The switch phase [deg] that starts the first pulse at 0.1 ms (eq. 18:
+#: pulses start where 360 nu t + phase passes asin 0.8 = 53.13 deg)
+EARLY_PULSE_PHASE = 53.1301 - 360 * 100 * 1e-4
+#: Flight time before the droplet is looked at [s]
+FLIGHT_TIME = "0.0021"
+
+
+def test_resolved_droplet_flies_as_a_body(tmp_path: Path) -> None:
+    case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
+    options = "constant/fvOptions"
+    for entry, value in (("mode", "insertion"), ("switchPhase", f"{EARLY_PULSE_PHASE:.4f}")):
+        run(case, f"foamDictionary -entry wireDroplets/{entry} -add {value} {options}",
+            log_name=f"foamDictionary.{entry}")
+    # 0.222 mm cells: three per droplet radius
+    block_mesh = case / "system" / "blockMeshDict"
+    block_mesh.write_text(block_mesh.read_text().replace("(20 16 32)", "(45 36 72)"))
+    run(case, "blockMesh")
+    for entry in ("endTime", "writeInterval"):
+        set_entry(case / "system" / "controlDict", entry, FLIGHT_TIME)
+    set_entry(case / "system" / "controlDict", "writeFormat", "ascii")
+    result = run(case, "ldnaFoam")
+    assert "under-resolved" not in result.output
+
+    alpha = read_internal_field(time_directories(case)[-1] / "alpha.metal")
+    print(f"after {FLIGHT_TIME} s of flight: largest metal fraction {alpha.max():.4f}")
+    assert alpha.max() >= BODY_FRACTION, "a resolved droplet flies as a body of metal"
+
+#: The template's short run: written when the first droplets are in flight
+#: (they detach at 9.7 ms) and when they have landed
+IN_FLIGHT_TIME = "0.012"
+LANDED_TIME = "0.03"
+#: A substrate preheated under the process, as after the first second of
+#: welding, so that a pool melts into it within the short run
+PREHEATED_BOX = "(5e-3 -6e-3 -2e-3) (15e-3 6e-3 0)"
+PREHEAT_TEMPERATURE = 1600.0
+
+
+def test_template_droplets_arrive_as_bodies_into_a_pool(ldna_case: Path) -> None:
+    case = ldna_case
+    control = case / "system" / "controlDict"
+    set_entry(control, "endTime", LANDED_TIME)
+    set_entry(control, "writeControl", "adjustableRunTime")
+    set_entry(control, "writeInterval", IN_FLIGHT_TIME)
+    set_fields = case / "system" / "setFieldsDict"
+    text = set_fields.read_text()
+    preheat = f"""
+    boxToCell
+    {{
+        box {PREHEATED_BOX};
+        fieldValues (volScalarFieldValue T {PREHEAT_TEMPERATURE:g});
+    }}
+);"""
+    set_fields.write_text(text[:text.rindex(");")] + preheat + text[text.rindex(");") + 2:])
+    mesh_case(case)
+    run(case, "setFields")
+    run(case, "ldnaFoam")
+    run(case, "postProcess -func writeCellCentres -time 0", log_name="postProcess")
+    z = read_internal_field(case / "0" / "C")[:, 2]
+    wire_height = 1e-3 * dictionary_scalar(case, "system/caseParameters", "wireHeight")
+
+    # At level 0 (1.5 cells per radius) a droplet in flight straddles cells:
+    # it stays a body (cells mostly metal), where the paper's Gaussian source
+    # put 0.11 at most into any cell at the coarsest level
+    in_flight = read_internal_field(case / IN_FLIGHT_TIME / "alpha.metal")
+    between = (z > 0.1 * wire_height) & (z < 0.9 * wire_height)
+    print(f"in flight: largest metal fraction {in_flight[between].max():.4f}")
+    assert in_flight[between].max() > 0.5, "droplets fly as bodies of metal"
+
+    last = time_directories(case)[-1]
+    alpha = read_internal_field(last / "alpha.metal")
+    liquid = read_internal_field(last / "liquidFraction")
+    molten_substrate = (z < 0) & (alpha > 0.5) & (liquid > 0.5)
+    print(f"landed: {molten_substrate.sum()} molten substrate cells")
+    assert molten_substrate.sum() > 0, "a pool melts into the substrate"
+    low, high = alpha_bounds(case / "log.ldnaFoam")
+    assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND

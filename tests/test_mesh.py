@@ -1,14 +1,15 @@
-"""The template's mesh levels and the gmsh route.
+"""The template's process-zone mesh, its levels and the gmsh route.
 
 blockMesh takes whole cell counts from system/meshLevels/level<N>, written by
 'ldna mesh-levels' from system/caseParameters; the files must match the
-parameters, and the finest level must reach the paper's 0.15 mm interface
-cells (about 0.7 million cells, as the paper's 690 000).  The gmsh route
+parameters.  After snappyHexMesh's refinement the process zone (the bead and
+pool box and the droplet column of caseParameters) must hold cubic cells of
+0.45 mm / 2^level, and the cells must grow outside it.  A process zone that
+misses the laser's footprint or the droplets is refused.  The gmsh route
 (ldna gmsh-mesh, Allrun -gmsh) must give the same mesh as blockMesh.
 """
 from __future__ import annotations
 
-import re
 import shutil
 import sys
 from pathlib import Path
@@ -20,15 +21,16 @@ from ldna import meshing
 from ldna.foamcase import dictionary_value, read_internal_field, run
 from ldna.foamdict import read_scalars, set_entry
 
-TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
-#: The paper's smallest cells, at the free surface [m]
-PAPER_INTERFACE_CELL = 0.15e-3
-#: Relative cell-volume difference of the gmsh and block meshes: both place
-#: the same graded points, written with the case's 8 significant digits
-GMSH_VOLUME_TOLERANCE = 1e-7
-#: Simulated time of the run on the gmsh mesh [s] (a few steps)
-GMSH_RUN_TIME = "0.002"
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
 
+TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
+#: Relative cell-volume difference of the gmsh and block meshes: both place
+#: the same uniform points, written with the case's 8 significant digits
+GMSH_VOLUME_TOLERANCE = 1e-7
+#: Cubic cells: edge lengths of the refined cells equal within this
+CUBE_TOLERANCE = 0.02
+#: Simulated time of the run on the gmsh mesh [s] (a few steps)
+GMSH_RUN_TIME = "0.0005"
 
 @pytest.mark.parametrize("level", range(meshing.MAX_LEVEL + 1))
 def test_level_files_match_case_parameters(level: int) -> None:
@@ -37,33 +39,59 @@ def test_level_files_match_case_parameters(level: int) -> None:
     written = (TEMPLATE / "system" / "meshLevels" / f"level{level}").read_text()
     assert written == expected, "run 'ldna mesh-levels cases/ldna' after changing the geometry"
 
+def cell_field(case: Path, function: str, field: str) -> np.ndarray:
+    run(case, f"postProcess -func {function} -time 0", log_name=f"postProcess.{function}")
+    return read_internal_field(case / "0" / field)
 
-def test_finest_level_reaches_paper_resolution(ldna_case: Path) -> None:
-    set_entry(ldna_case / "system" / "caseParameters", "level", str(meshing.MAX_LEVEL))
-    result = run(ldna_case, "blockMesh")
-    n_cells = int(re.search(r"nCells: (\d+)", result.output).group(1))
-    assert 500_000 < n_cells < 900_000
+def zone_mask(centres: np.ndarray, p: dict[str, float], shrink: float) -> np.ndarray:
+    """Cells whose centre is inside the process zone shrunk by ``shrink`` [m]."""
+    x, y, z = (centres[:, i] * 1e3 for i in range(3))
+    s = shrink * 1e3
+    bead = ((x > p["processPosition"] - p["processZoneUpstream"] + s)
+            & (x < p["processPosition"] + p["processZoneDownstream"] - s)
+            & (abs(y) < p["processZoneHalfWidth"] - s)
+            & (z > -p["processZoneDepth"] + s) & (z < p["beadZoneHeight"] - s))
+    column = ((x > p["processPosition"] - 0.5 * p["wireSpacing"] - p["dropletZoneHalfWidth"] + s)
+              & (x < p["processPosition"] + 0.5 * p["wireSpacing"] + p["dropletZoneHalfWidth"] - s)
+              & (abs(y) < p["dropletZoneHalfWidth"] - s) & (z > s)
+              & (z < p["dropletZoneHeight"] - s))
+    return bead | column
 
+@pytest.mark.parametrize("level", [0, 1])
+def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Path, level: int) -> None:
+    set_entry(ldna_case / "system" / "caseParameters", "level", str(level))
+    n_cells = meshing.mesh_case(ldna_case)
     checked = run(ldna_case, "checkMesh", check=False)
     assert "Mesh OK" in checked.output
 
-    # Heights of the cell layers touching the substrate surface z = 0
-    points_text = (ldna_case / "constant" / "polyMesh" / "points").read_text()
-    body = points_text[points_text.index("(", points_text.index("FoamFile") + 200):]
-    z = np.unique(np.round(np.array(re.findall(r"\(\S+ \S+ (\S+)\)", body), dtype=float), 9))
-    surface = int(np.argmin(np.abs(z)))
-    below, above = z[surface] - z[surface - 1], z[surface + 1] - z[surface]
-    print(f"{n_cells} cells; surface layers {below * 1e3:.4f} mm below, {above * 1e3:.4f} mm above")
-    assert abs(z[surface]) < 1e-9
-    assert max(below, above) <= PAPER_INTERFACE_CELL * (1 + 1e-6)
-    assert min(below, above) > 0.9 * PAPER_INTERFACE_CELL
+    p = read_scalars(ldna_case / "system" / "caseParameters")
+    h = 1e-3 * meshing.process_cell_size(level)
+    base = 1e-3 * meshing.base_cell_size(level)
+    centres = cell_field(ldna_case, "writeCellCentres", "C")
+    volumes = cell_field(ldna_case, "writeCellVolumes", "V")
+    inside = zone_mask(centres, p, shrink=base)
+    print(f"level {level}: {n_cells} cells, {inside.sum()} well inside the process zone")
+    assert inside.sum() > 0
+    assert np.allclose(volumes[inside], h**3, rtol=3 * CUBE_TOLERANCE)
+    # Outside the zone and its buffer the cells are the base cells
+    far = ~zone_mask(centres, p, shrink=-4 * base)
+    assert volumes[far].min() > 0.9 * (base / 2) ** 3
+    assert np.isclose(volumes.max(), base**3, rtol=0.1)
 
+@pytest.mark.parametrize("entry,value,message", [
+    ("processZoneHalfWidth", "5", "laser's oscillation"),
+    ("dropletZoneHeight", "4", "wire tips"),
+    ("processZoneDownstream", "40", "outside the domain"),
+])
+def test_process_zone_must_enclose_the_process(entry: str, value: str, message: str) -> None:
+    parameters = read_scalars(TEMPLATE / "system" / "caseParameters")
+    parameters[entry] = float(value)
+    with pytest.raises(ValueError, match=message):
+        meshing.check_process_zone(parameters)
 
 def sorted_cell_volumes(case: Path) -> np.ndarray:
     """The case's cell volumes, in increasing order."""
-    run(case, "postProcess -func writeCellVolumes -time 0", log_name="writeCellVolumes")
-    return np.sort(read_internal_field(case / "0" / "V"))
-
+    return np.sort(cell_field(case, "writeCellVolumes", "V"))
 
 def test_gmsh_route_gives_the_block_mesh(ldna_case: Path, tmp_path: Path) -> None:
     """'Allrun -gmsh' meshes the template with gmsh: the same hexahedra as blockMesh, and runs."""
@@ -87,7 +115,9 @@ def test_gmsh_route_gives_the_block_mesh(ldna_case: Path, tmp_path: Path) -> Non
     assert dictionary_value(gmsh_case, "constant/polyMesh/boundary",
                             "entry0/substrateWalls/type") == "wall"
 
-    # The scene runs on it
+    # The process zone refines it as it refines the block mesh, and the
+    # scene runs on it
+    run(gmsh_case, "snappyHexMesh -overwrite")
     set_entry(gmsh_case / "system" / "controlDict", "endTime", GMSH_RUN_TIME)
     run(gmsh_case, "setFields")
     result = run(gmsh_case, "ldnaFoam")

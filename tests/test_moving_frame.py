@@ -14,6 +14,7 @@ import numpy as np
 from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances,
                            read_function_object, read_internal_field, run, time_directories)
 from ldna.foamdict import keep_blocks, set_entry
+from ldna.meshing import mesh_case
 
 #: Allowed relative velocity error of the solid substrate (issue: 1 %)
 VELOCITY_TOLERANCE = 0.01
@@ -34,7 +35,7 @@ def test_cold_substrate_moves_at_welding_speed(ldna_case: Path) -> None:
     keep_only_porosity(case)
     set_entry(case / "system" / "controlDict", "endTime", "0.4")
     set_entry(case / "system" / "controlDict", "writeInterval", "0.2")
-    run(case, "blockMesh")
+    mesh_case(case)
     run(case, "setFields")
     run(case, "ldnaFoam")
 
@@ -77,3 +78,82 @@ def test_cold_substrate_moves_at_welding_speed(ldna_case: Path) -> None:
     assert drift < 1e-4
     low, high = alpha_bounds(case / "log.ldnaFoam")
     assert low > -1e-6 and high < 1 + 1e-6
+
+
+#: The thin solid film of the next test: metal fraction, extent [mm] (one
+#: process-zone cell high on the substrate surface, across the zone)
+FILM_ALPHA = 0.2
+FILM_BOX = "(6e-3 -5e-3 0) (20e-3 5e-3 0.45e-3)"
+FILM_END_TIME = "0.02"
+
+
+def test_solid_film_moves_with_the_substrate(ldna_case: Path) -> None:
+    """A cold film of metal fraction 0.2, at rest at first, on the moving substrate.
+
+    The enthalpy-porosity sink acts on every cell that holds solid metal, in
+    proportion to its metal: the film must take the substrate's velocity
+    (1 %) and keep its shape and metal.  With a threshold on the metal
+    fraction (formerly 0.5) nothing held the film.
+    """
+    case = ldna_case
+    keep_only_porosity(case)
+    for entry in ("endTime", "writeInterval"):
+        set_entry(case / "system" / "controlDict", entry, FILM_END_TIME)
+    set_fields = case / "system" / "setFieldsDict"
+    text = set_fields.read_text()
+    film = f"""
+    boxToCell
+    {{
+        box {FILM_BOX};
+        fieldValues
+        (
+            volScalarFieldValue alpha.metal {FILM_ALPHA}
+            volVectorFieldValue U (0 0 0)
+        );
+    }}
+);"""
+    set_fields.write_text(text[:text.rindex(");")] + film + text[text.rindex(");") + 2:])
+    mesh_case(case)
+    run(case, "setFields")
+    run(case, "postProcess -func writeCellCentres -time 0", log_name="postProcess.C")
+    run(case, "postProcess -func writeCellVolumes -time 0", log_name="postProcess.V")
+    centres = read_internal_field(case / "0" / "C")
+    volumes = read_internal_field(case / "0" / "V")
+    alpha0 = read_internal_field(case / "0" / "alpha.metal")
+    above = centres[:, 2] > 0
+    assert np.isclose(alpha0[above].max(), FILM_ALPHA)
+
+    run(case, "ldnaFoam")
+
+    welding_speed = dictionary_scalar(case, "system/caseParameters", "weldingSpeed")
+    last = time_directories(case)[-1]
+    alpha = read_internal_field(last / "alpha.metal")
+    velocity = read_internal_field(last / "U")
+    film = above & (alpha > 0.5 * FILM_ALPHA)
+    mean_velocity = (alpha[film, None] * velocity[film] * volumes[film, None]).sum(axis=0) \
+        / (alpha[film] * volumes[film]).sum()
+    error = np.abs(mean_velocity - np.array([welding_speed, 0, 0])) / welding_speed
+    print(f"film: metal-weighted velocity {mean_velocity} m/s, v_w {welding_speed} m/s")
+    assert error.max() < VELOCITY_TOLERANCE
+
+    # The metal itself moves by v_w t (its centroid: conservative advection at
+    # a uniform velocity shifts it exactly), stays in its layer, and the film
+    # keeps its footprint: it gains cells only at its downstream end and
+    # loses them only at its upstream end
+    layer = above & (centres[:, 2] < 0.45e-3)
+    metal0, metal = (alpha0 * volumes)[layer].sum(), (alpha * volumes)[layer].sum()
+    shift = ((alpha * volumes * centres[:, 0])[layer].sum() / metal
+             - (alpha0 * volumes * centres[:, 0])[layer].sum() / metal0)
+    expected_shift = welding_speed * float(last.name)
+    initial = layer & (alpha0 > 0)
+    x0 = centres[initial, 0]
+    cell = float(np.cbrt(volumes[initial].max()))
+    gained, lost = film & ~initial, initial & ~film
+    print(f"film: shift {shift * 1e3:.5f} mm (v_w t = {expected_shift * 1e3:.5f} mm), metal "
+          f"{metal / metal0:.6f} of the start, {gained.sum()} cells gained, {lost.sum()} lost, "
+          f"metal fraction {alpha[film].min():.4f}..{alpha[film].max():.4f}")
+    assert abs(shift / expected_shift - 1) < VELOCITY_TOLERANCE
+    assert abs(metal / metal0 - 1) < 1e-4
+    assert (alpha * volumes)[above & ~layer].sum() < 1e-4 * metal0
+    assert np.all(centres[gained, 0] > x0.max()) and np.all(centres[gained, 0] < x0.max() + 1.5 * cell)
+    assert np.all(centres[lost, 0] < x0.min() + 0.5 * cell)

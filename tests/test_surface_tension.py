@@ -66,6 +66,31 @@ def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None
     assert largest_speed < SPURIOUS_VELOCITY_SCALE * sigma / mu
 
 
+def test_capillary_force_is_zero_in_solid_metal(static_droplet_case: Path) -> None:
+    """The same cylinder, solid: no capillary force, so no pressure jump and no flow."""
+    case = static_droplet_case
+    solidus = dictionary_scalar(case, PROPERTIES, "metal/solidus")
+    run(case, f"foamDictionary -entry internalField -set 'uniform {solidus - 300:g}' 0/T",
+        log_name="foamDictionary.T")
+    run(case, "ldnaFoam")
+
+    last = time_directories(case)[-1]
+    p = read_internal_field(last / "p_rgh")
+    velocity = read_internal_field(last / "U")
+    x, z, h = cell_centres_2d(case)
+    radius = dictionary_scalar(case, "system/setAlphaFieldDict", "radius")
+    origin = run(case, "foamDictionary -entry origin -value system/setAlphaFieldDict").output
+    cx, _, cz = (float(v) for v in origin.strip().strip("()").split())
+    r = np.hypot(x - cx, z - cz)
+    jump = p[r < radius - 3 * h].mean() - p[r > radius + 3 * h].mean()
+    laplace = dictionary_scalar(case, PROPERTIES, "sigma") / radius
+    largest_speed = np.linalg.norm(velocity, axis=1).max()
+    print(f"solid: pressure jump {jump:.3g} Pa (liquid: {laplace:.2f} Pa), "
+          f"largest speed {largest_speed:.2e} m/s")
+    assert abs(jump) < 1e-3 * laplace
+    assert largest_speed < 1e-9
+
+
 @pytest.mark.parametrize("d_sigma_d_t", [-4.3e-4, 4.3e-4])
 def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -> None:
     """Liquid layer of depth d under tau = dsigma/dT dT/dx: surface speed tau d/(4 mu).

@@ -44,12 +44,17 @@ def shorten(tutorial: Path, steps: int) -> None:
     """End the tutorial after ``steps`` initial time steps and write then.
 
     A tutorial without its own controlDict takes the template's, so the
-    shortened copy of that is put in its system/ folder.
+    shortened copy of that (and the caseParameters it includes) is put in
+    its system/ folder.
     """
     control = tutorial / "system" / "controlDict"
     if not control.exists():
         control.parent.mkdir(exist_ok=True)
-        shutil.copy(PROJECT_DIR / "cases" / "ldna" / "system" / "controlDict", control)
+        # with the caseParameters it includes, unless the tutorial has its own
+        for name in ("controlDict", "caseParameters"):
+            if not (tutorial / "system" / name).exists():
+                shutil.copy(PROJECT_DIR / "cases" / "ldna" / "system" / name,
+                            tutorial / "system" / name)
     delta_t = float(run(tutorial, "foamDictionary -entry deltaT -value system/controlDict",
                         log_name="foamDictionary.deltaT").output.split()[-1])
     end_time = f"{steps * delta_t:g}"

@@ -76,10 +76,10 @@ class LdnaScene:
         for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
             run(case, f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
                       "system/controlDict", log_name="foamDictionary")
-        return meshing.interface_cell_size(level)
+        return meshing.process_cell_size(level)
 
     def prepare(self, case: Path) -> None:
-        run(case, "blockMesh")
+        meshing.mesh_case(case)
         run(case, "setFields")
 
     def outputs(self, case: Path) -> dict[str, float]:

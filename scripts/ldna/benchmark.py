@@ -26,7 +26,7 @@ import numpy as np
 
 from .foamcase import PROJECT_DIR, copy_case, read_balances, run, run_parallel
 from .foamdict import block_names, keep_blocks, read_scalars, remove_blocks, set_entry
-from .meshing import mesh_counts
+from .meshing import cell_count, mesh_case
 
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
 
@@ -84,7 +84,7 @@ def laser_cost(level: int = 1, steps: int = 20, delta_t: float = 1e-4,
     case = copy_case(TEMPLATE, scratch / "ldna")
     set_entry(case / "system" / "caseParameters", "level", str(level))
     _fixed_steps(case, steps, delta_t)
-    run(case, "blockMesh")
+    mesh_case(case)
     run(case, "setFields")
 
     length = read_scalars(case / "system" / "caseParameters")["length"]
@@ -257,7 +257,7 @@ def solver_costs(level: int = 0, steps: int = 40, delta_t: float = 2e-4, n_procs
     run(scene, "foamDictionary -entry boundaryField/substrateWalls -set "
                "'{ type zeroGradient; }' 0/T", log_name="foamDictionary")
     _without_function_objects(scene)
-    run(scene, "blockMesh")
+    mesh_case(scene)
     run(scene, "setFields")
     full_options = (scene / "constant" / "fvOptions").read_text()
     effects = block_names(scene / "constant" / "fvOptions")
@@ -286,8 +286,7 @@ def solver_costs(level: int = 0, steps: int = 40, delta_t: float = 2e-4, n_procs
         cost.ratio = cost.seconds_per_step / no_effects
     serial = ldna_with(effects, "ldnaFoam.all")
     parallel = ldna_with(effects, "ldnaFoam.parallel", n_procs)
-    counts = mesh_counts(read_scalars(scene / "system" / "caseParameters"), level)
-    return SolverCosts(level=level, cells=counts.n_cells, steps=steps, delta_t=delta_t,
+    return SolverCosts(level=level, cells=cell_count(scene), steps=steps, delta_t=delta_t,
                        ldna_no_effects=no_effects, compressible_inter_foam=inter_foam,
                        effects=costs, all_effects=serial, template_delta_t=template_delta_t,
                        serial_all_effects=serial, parallel_all_effects=parallel,

@@ -2,18 +2,15 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
-from . import benchmark, meshing, process_zone
+from . import benchmark, meshing
 
 
 def _mesh_levels(args: argparse.Namespace) -> int:
-    case = Path(args.case)
-    # A case with a refined process zone (tutorials/ldnaBead) counts its
-    # base cells and refinement levels; the template its graded blocks
-    levels = process_zone if (case / "system" / "snappyHexMeshDict").exists() else meshing
-    for path in levels.write_mesh_levels(case):
+    for path in meshing.write_mesh_levels(Path(args.case)):
         print(path)
     return 0
 
@@ -65,6 +62,14 @@ def _accuracy(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bead_report(args: argparse.Namespace) -> int:
+    from . import validation
+
+    figures = validation.bead_report(Path(args.case), Path(args.output))
+    print(json.dumps(figures, indent=2))
+    return 0
+
+
 def _float_list(text: str) -> list[float]:
     return [float(value) for value in text.split(",")]
 
@@ -72,10 +77,13 @@ def _float_list(text: str) -> list[float]:
 def _post(args: argparse.Namespace) -> int:
     from . import post
 
-    result, pictures = post.post_process(Path(args.case), args.output, args.time,
-                                         surface_height=args.surface_height,
-                                         bead_section=args.bead_section,
-                                         fusion_temperature_=args.fusion_temperature)
+    result, pictures, time = post.post_process(Path(args.case), args.output, args.time,
+                                               surface_height=args.surface_height,
+                                               bead_section=args.bead_section,
+                                               fusion_temperature_=args.fusion_temperature)
+    if args.json:
+        print(json.dumps(post.summary(Path(args.case), result, time)))
+        return 0
     print(post.format_metrics(result))
     for picture in pictures:
         print(picture)
@@ -177,6 +185,18 @@ def build_parser() -> argparse.ArgumentParser:
                            "[slice of largest bead area]")
     post.add_argument("--fusion-temperature", type=float,
                       help="isotherm of the fusion line [K] [(solidus+liquidus)/2]")
+    report = commands.add_parser(
+        "bead-report",
+        help="validation report of a long run: bead.json (figures, steadiness, mass "
+             "balance, cost), bead area against time and the pictures",
+    )
+    report.add_argument("case", help="case directory")
+    report.add_argument("output", help="folder of the report")
+    report.set_defaults(func=_bead_report)
+
+    post.add_argument("--json", action="store_true",
+                      help="print the bead figures as one JSON object (mm, mm2, K, deg) "
+                           "instead of the table")
     post.set_defaults(func=_post)
     return parser
 

@@ -4,11 +4,10 @@ Builds the template's box (``system/caseParameters``: length, width,
 substrate depth, cladding height) with the gmsh Python API as two volumes
 extruded from the substrate's bottom in structured layers, and converts it with OpenFOAM's gmshToFoam.
 
-The mesh is structured hexahedra, layer by layer like the block mesh (the
-counts of ``system/meshLevels``): a uniform band of the level's interface
-cells about the substrate surface (claddingFineBand above,
-substrateFineBand below) and geometric growth to coarseCellSize beyond it.
-A tetrahedral mesh of the same domain runs away in ldnaFoam's first time
+The mesh is the block mesh's base: structured, uniform (nearly) cubic
+hexahedra of the counts of ``system/meshLevels``, the substrate surface on
+cell faces; the case's Allrun -gmsh then refines the process zone with
+snappyHexMesh as after blockMesh.  A tetrahedral mesh of the same domain runs away in ldnaFoam's first time
 step (Courant number 1e48 on a level-0 mesh of 30,000 tetrahedra), so the
 solver is only used on hexahedra for now.  The patches have the template's
 names and types, so the template's fields and dictionaries apply unchanged.
@@ -19,19 +18,10 @@ from pathlib import Path
 
 from .foamcase import run
 from .foamdict import read_scalars
-from .meshing import interface_cell_size, mesh_counts
+from .meshing import mesh_counts
 
 #: Patch types of the template (gmshToFoam makes every patch a 'patch')
 WALL_PATCHES = ("substrateWalls",)
-
-
-def graded_heights(length: float, cells: int, last_over_first: float) -> list[float]:
-    """Cell heights of a geometric progression over ``length`` (blockMesh's grading)."""
-    if cells == 1 or abs(last_over_first - 1) < 1e-12:
-        return [length / cells] * cells
-    growth = last_over_first ** (1 / (cells - 1))
-    first = length * (1 - growth) / (1 - growth**cells)
-    return [first * growth**i for i in range(cells)]
 
 
 def layer_fractions(heights: list[float]) -> list[float]:
@@ -40,7 +30,7 @@ def layer_fractions(heights: list[float]) -> list[float]:
     return [sum(heights[: i + 1]) / total for i in range(len(heights))]
 
 
-def build_msh(case: Path, level: int, msh_file: Path) -> int:
+def build_msh(case: Path, level: float, msh_file: Path) -> int:
     """Write the gmsh mesh of the case's LDNA domain; returns its number of hexahedra."""
     import gmsh
 
@@ -48,14 +38,9 @@ def build_msh(case: Path, level: int, msh_file: Path) -> int:
     counts = mesh_counts(p, level)
     length, width = p["length"], p["width"]
     depth, height = p["substrateDepth"], p["claddingHeight"]
-    sub_fine, clad_fine = p["substrateFineBand"], p["claddingFineBand"]
-    dz_min = interface_cell_size(level)
-    expand = max(p["coarseCellSize"], 1.0001 * dz_min) / dz_min
     half = 0.5 * width
-    substrate_heights = (graded_heights(depth - sub_fine, counts.n_sub_coarse, 1 / expand)
-                         + graded_heights(sub_fine, counts.n_sub_fine, 1.0))
-    cladding_heights = (graded_heights(clad_fine, counts.n_clad_fine, 1.0)
-                        + graded_heights(height - clad_fine, counts.n_clad_coarse, expand))
+    substrate_heights = [depth / counts.n_sub] * counts.n_sub
+    cladding_heights = [height / counts.n_clad] * counts.n_clad
 
     gmsh.initialize(["-noenv"])
     try:
@@ -107,11 +92,11 @@ def build_msh(case: Path, level: int, msh_file: Path) -> int:
         gmsh.finalize()
 
 
-def gmsh_mesh(case: Path, level: int | None = None) -> int:
-    """Mesh ``case`` with gmsh + gmshToFoam at ``level`` (default: caseParameters)."""
+def gmsh_mesh(case: Path, level: float | None = None) -> int:
+    """Mesh ``case``'s base with gmsh + gmshToFoam at ``level`` (default: caseParameters)."""
     case = Path(case)
     if level is None:
-        level = int(read_scalars(case / "system" / "caseParameters")["level"])
+        level = read_scalars(case / "system" / "caseParameters")["level"]
     msh_file = case / "ldna.msh"
     n_cells = build_msh(case, level, msh_file)
     run(case, f"gmshToFoam {msh_file.name}", log_name="gmshToFoam")

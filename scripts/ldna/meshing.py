@@ -1,117 +1,167 @@
-"""Cell counts of the LDNA block mesh for each resolution level.
+"""The LDNA mesh of each resolution level: a refined process zone in a coarse box.
 
-blockMesh needs whole numbers of cells, which OpenFOAM v1912's ``#eval``
-cannot produce, so the counts are written once per level into
-``system/meshLevels/level<N>`` and ``system/blockMeshDict`` includes the file
-of the chosen ``level``.  The formulas here and the grading in blockMeshDict
-describe the same mesh:
+The moving frame keeps the process fixed in space, so one static refined
+region serves the whole run.  ``level`` sets the size of the **cubic** cells
+of the process zone, ``h = 0.45 mm / 2**level``: level 0 puts 1.5 cells on
+the radius of the template's droplet (0.68 mm; the least that inserts a
+droplet as a body), level 1 three (0.225 mm, droplets resolved).
 
-- interface (finest) cell height ``dz_min = 1.2 mm / 2**level`` (level 3 is
-  the paper's 0.15 mm), in-plane cells of ``2 dz_min``;
-- a uniform band of ``dz_min`` cells on either side of the substrate surface;
-- beyond it geometric growth to ``coarseCellSize`` with
-  ``n = L ln(r) / (dz_max - dz_min)`` cells, the log-mean cell size of a
-  geometric progression from ``dz_min`` to ``dz_max = r dz_min``.
+The mesh is made in two OpenFOAM steps, both reading ``system/caseParameters``:
+
+- ``blockMesh``: the whole domain in uniform cubic base cells of
+  ``h 2**n`` with ``n = floor(level) + 1`` (0.9 mm at every whole level),
+  the substrate surface z = 0 on cell faces;
+- ``snappyHexMesh`` (castellation only): refinement regions split the base
+  cells ``n`` times inside the process zone, with ``nCellsBetweenLevels``
+  buffer cells per level around it, so the cells grow smoothly outside.
+
+The process zone is the union of two boxes: the bead and pool box (ahead of
+the wires, to where the bead has solidified behind them, across the laser's
+oscillation footprint, from the pool's depth to above the bead) and the
+droplet column (around both wire tips down to the surface).  blockMesh needs
+whole cell counts, which OpenFOAM v1912's ``#eval`` cannot compute, so they
+are written per level into ``system/meshLevels/level<N>`` by
+``ldna mesh-levels``, which also checks that the process zone encloses the
+wire tips, the droplets' flight and the laser's footprint.
 """
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 from .foamdict import read_scalars, set_entry
 
-#: Interface cell height at level 0 [mm]; 1.2 / 2**3 = 0.15 mm, the paper's
-#: finest cells
-LEVEL0_INTERFACE_CELL = 1.2
-#: In-plane cell size over interface cell height
-IN_PLANE_ASPECT = 2.0
-#: Highest level offered (the paper's resolution)
+#: Process-zone cell size at level 0 [mm]: 1.5 cells on the radius of the
+#: template's droplet (0.68 mm, 7.5 kg/h from two wires at 100 Hz)
+LEVEL0_CELL = 0.45
+#: Highest level offered
 MAX_LEVEL = 3
+#: Droplet diameter factor of the irregular start (paper eq. 25-27)
+IRREGULAR_DIAMETER_FACTOR = 2.0
 
 
 @dataclass(frozen=True)
 class MeshCounts:
-    """Whole cell counts of the two blocks of the LDNA mesh."""
+    """Whole cell counts of the base block mesh and the refinement of the zone."""
 
     nx: int
     ny: int
-    n_sub_fine: int
-    n_sub_coarse: int
-    n_clad_fine: int
-    n_clad_coarse: int
+    n_sub: int
+    n_clad: int
+    n_refine: int
 
     @property
-    def n_cells(self) -> int:
-        """Total number of cells."""
-        nz = self.n_sub_fine + self.n_sub_coarse + self.n_clad_fine + self.n_clad_coarse
-        return self.nx * self.ny * nz
+    def n_base_cells(self) -> int:
+        """Cells of the block mesh before the refinement."""
+        return self.nx * self.ny * (self.n_sub + self.n_clad)
 
 
-def interface_cell_size(level: float) -> float:
-    """Finest cell height [mm] at a resolution level.
-
-    Levels between the whole ones (``ldna accuracy`` uses halves) give cells
-    of ``1.2 mm / 2**level`` as well.
-    """
+def process_cell_size(level: float) -> float:
+    """Cubic cell size [mm] of the process zone at a resolution level."""
     if not 0 <= level <= MAX_LEVEL:
         raise ValueError(f"level must be in [0, {MAX_LEVEL}], not {level}")
-    return LEVEL0_INTERFACE_CELL / 2**level
+    return LEVEL0_CELL / 2**level
 
 
-def _graded_cells(length: float, dz_min: float, dz_max: float) -> int:
-    return max(1, round(length * math.log(dz_max / dz_min) / (dz_max - dz_min)))
+def refinement_levels(level: float) -> int:
+    """How often snappyHexMesh splits the base cells in the process zone."""
+    return math.floor(level) + 1
+
+
+def base_cell_size(level: float) -> float:
+    """Base (block mesh) cell size [mm]."""
+    return process_cell_size(level) * 2**refinement_levels(level)
+
+
+def droplet_radius(parameters: dict[str, float]) -> float:
+    """Radius [mm] of a regular droplet: the wire volume of one detachment period."""
+    wire_volume_rate = parameters["wireFeedSpeed"] * math.pi * parameters["wireRadius"] ** 2
+    volume = wire_volume_rate / parameters["dropletFrequency"]
+    return 1e3 * (3 * volume / (4 * math.pi)) ** (1 / 3)
+
+
+def check_process_zone(parameters: dict[str, float]) -> None:
+    """The process zone must enclose the wire tips, the droplets' flight and the laser.
+
+    Raises ``ValueError`` naming the entry and the bound it misses.
+    """
+    p = parameters
+    centre_x = p["processPosition"]
+    wires_x = (centre_x - 0.5 * p["wireSpacing"], centre_x + 0.5 * p["wireSpacing"])
+    largest_droplet = IRREGULAR_DIAMETER_FACTOR * droplet_radius(p)
+    laser_reach = 1e3 * (p["oscillationAmplitude"] + p["laserBeamRadius"])
+    laser_x = centre_x + p["laserOffset"]
+    requirements = [
+        ("processZoneUpstream", p["processZoneUpstream"],
+         centre_x - min(wires_x[0], laser_x) + largest_droplet,
+         "reach the first wire's droplets and the laser spot ahead of the wires"),
+        ("processZoneDownstream", p["processZoneDownstream"],
+         max(wires_x[1], laser_x) - centre_x + largest_droplet,
+         "reach the last wire's droplets and the laser spot behind the wires"),
+        ("processZoneHalfWidth", p["processZoneHalfWidth"], laser_reach,
+         "cover the laser's oscillation (amplitude + beam radius)"),
+        ("dropletZoneHalfWidth", p["dropletZoneHalfWidth"], largest_droplet,
+         "hold the largest (irregular-start) droplet"),
+        ("dropletZoneHeight", p["dropletZoneHeight"], p["wireHeight"] + largest_droplet,
+         "enclose the wire tips and the largest droplet there"),
+    ]
+    for entry, value, needed, why in requirements:
+        if not value >= needed:
+            raise ValueError(f"caseParameters: {entry} {value:g} mm must be >= {needed:.3g} mm "
+                             f"to {why}")
+    inside = [
+        ("processZoneUpstream", centre_x - p["processZoneUpstream"], 0.0, p["length"]),
+        ("processZoneDownstream", centre_x + p["processZoneDownstream"], 0.0, p["length"]),
+        ("processZoneHalfWidth", p["processZoneHalfWidth"], 0.0, 0.5 * p["width"]),
+        ("processZoneDepth", p["processZoneDepth"], 0.0, p["substrateDepth"]),
+        ("beadZoneHeight", p["beadZoneHeight"], 0.0, p["claddingHeight"]),
+        ("dropletZoneHeight", p["dropletZoneHeight"], 0.0, p["claddingHeight"]),
+    ]
+    for entry, value, low, high in inside:
+        if not low < value < high:
+            raise ValueError(f"caseParameters: {entry} puts the process zone at {value:g} mm, "
+                             f"outside the domain ({low:g}, {high:g}) mm")
 
 
 def mesh_counts(parameters: dict[str, float], level: float) -> MeshCounts:
     """Cell counts for the geometry in ``caseParameters`` at ``level``."""
-    dz_min = interface_cell_size(level)
-    dxy = IN_PLANE_ASPECT * dz_min
-    dz_max = max(parameters["coarseCellSize"], 1.0001 * dz_min)
-    sub, clad = parameters["substrateDepth"], parameters["claddingHeight"]
-    sub_fine, clad_fine = parameters["substrateFineBand"], parameters["claddingFineBand"]
+    for entry in ("length", "width", "substrateDepth", "claddingHeight"):
+        if not 0 < parameters[entry] < 1e4:
+            raise ValueError(f"caseParameters: {entry} must be in (0, 1e4) mm, "
+                             f"not {parameters[entry]}")
+    base = base_cell_size(level)
     return MeshCounts(
-        nx=round(parameters["length"] / dxy),
-        ny=round(parameters["width"] / dxy),
-        n_sub_fine=math.ceil(sub_fine / dz_min - 1e-9),
-        n_sub_coarse=_graded_cells(sub - sub_fine, dz_min, dz_max),
-        n_clad_fine=math.ceil(clad_fine / dz_min - 1e-9),
-        n_clad_coarse=_graded_cells(clad - clad_fine, dz_min, dz_max),
+        nx=max(1, round(parameters["length"] / base)),
+        ny=max(1, round(parameters["width"] / base)),
+        n_sub=max(1, round(parameters["substrateDepth"] / base)),
+        n_clad=max(1, round(parameters["claddingHeight"] / base)),
+        n_refine=refinement_levels(level),
     )
-
-
-def level_name(level: float) -> str:
-    """How a level is spelled in caseParameters and meshLevels file names: 1, 1.5."""
-    return f"{level:g}"
 
 
 def level_file_text(counts: MeshCounts, level: float) -> str:
     """Contents of ``system/meshLevels/level<N>``."""
     return (
-        "// Cell counts of resolution level {level} (about {cells} cells), written by\n"
-        "// 'ldna mesh-levels' from system/caseParameters: run it again after\n"
-        "// changing the geometry there.\n"
+        "// Mesh of resolution level {level}: process-zone cells of {h:g} mm, base cells\n"
+        "// of {base:g} mm ({base_cells} of them) split {c.n_refine} times in the zone.\n"
+        "// Written by 'ldna mesh-levels' from system/caseParameters: run it again\n"
+        "// after changing the geometry there.\n"
         "nx          {c.nx};\n"
         "ny          {c.ny};\n"
-        "nSubFine    {c.n_sub_fine};\n"
-        "nSubCoarse  {c.n_sub_coarse};\n"
-        "nCladFine   {c.n_clad_fine};\n"
-        "nCladCoarse {c.n_clad_coarse};\n"
-        "nSubTotal   {n_sub};\n"
-        "nCladTotal  {n_clad};\n"
-    ).format(
-        level=level_name(level),
-        cells=counts.n_cells,
-        c=counts,
-        n_sub=counts.n_sub_fine + counts.n_sub_coarse,
-        n_clad=counts.n_clad_fine + counts.n_clad_coarse,
-    )
+        "nSub        {c.n_sub};\n"
+        "nClad       {c.n_clad};\n"
+        "nRefine     {c.n_refine};\n"
+    ).format(level=level_name(level), h=process_cell_size(level), base=base_cell_size(level),
+             base_cells=counts.n_base_cells, c=counts)
 
 
 def write_level_file(case: Path, level: float) -> Path:
     """Write ``system/meshLevels/level<level>`` of an LDNA case; return its path."""
     case = Path(case)
     parameters = read_scalars(case / "system" / "caseParameters")
+    check_process_zone(parameters)
     out_dir = case / "system" / "meshLevels"
     out_dir.mkdir(exist_ok=True)
     path = out_dir / f"level{level_name(level)}"
@@ -119,27 +169,55 @@ def write_level_file(case: Path, level: float) -> Path:
     return path
 
 
-#: How the template's blockMeshDict includes the counts of its level
+def level_name(level: float) -> str:
+    """How a level is spelled in caseParameters and meshLevels file names: 1, 1.5."""
+    return f"{level:g}"
+
+
+#: How the template's mesh dictionaries include the counts of their level
 LEVEL_INCLUDE = '#include "meshLevels/level$level"'
+#: The mesh dictionaries that include them
+MESH_DICTIONARIES = ("blockMeshDict", "snappyHexMeshDict")
 
 
 def set_level(case: Path, level: float) -> None:
-    """Mesh an LDNA case at any ``level`` in [0, 3], whole or not (1.5: 0.42 mm).
+    """Mesh an LDNA case at any ``level`` in [0, 3], whole or not (1.5: 0.16 mm).
 
     Writes the level's cell counts, sets ``level`` in caseParameters and makes
-    blockMeshDict include that file by its name: OpenFOAM spells a fractional
-    ``$level`` with trailing zeros (``level1.50000000``), which no file has.
+    the mesh dictionaries include that file by its name: OpenFOAM spells a
+    fractional ``$level`` with trailing zeros (``level1.50000000``), which no
+    file has.
     """
     case = Path(case)
     path = write_level_file(case, level)
     set_entry(case / "system" / "caseParameters", "level", level_name(level))
-    block_mesh = case / "system" / "blockMeshDict"
-    text = block_mesh.read_text()
-    if LEVEL_INCLUDE not in text:
-        raise ValueError(f"{block_mesh} does not include its counts by '{LEVEL_INCLUDE}'")
-    block_mesh.write_text(text.replace(LEVEL_INCLUDE, f'#include "meshLevels/{path.name}"'))
+    for name in MESH_DICTIONARIES:
+        dictionary = case / "system" / name
+        text = dictionary.read_text()
+        if LEVEL_INCLUDE not in text:
+            raise ValueError(f"{dictionary} does not include its counts by '{LEVEL_INCLUDE}'")
+        dictionary.write_text(text.replace(LEVEL_INCLUDE, f'#include "meshLevels/{path.name}"'))
 
 
 def write_mesh_levels(case: Path) -> list[Path]:
     """Write ``system/meshLevels/level0..3`` of an LDNA case; return the paths."""
     return [write_level_file(case, level) for level in range(MAX_LEVEL + 1)]
+
+
+def mesh_case(case: Path) -> int:
+    """Mesh an LDNA case as its Allrun does (blockMesh, then snappyHexMesh's
+    refinement of the process zone); return the number of cells."""
+    from .foamcase import run
+
+    run(case, "blockMesh")
+    run(case, "snappyHexMesh -overwrite")
+    return cell_count(case)
+
+
+def cell_count(case: Path) -> int:
+    """Cells of a case's mesh, from the header of constant/polyMesh/owner."""
+    header = (Path(case) / "constant" / "polyMesh" / "owner").read_bytes()[:2000]
+    match = re.search(rb"nCells:\s*(\d+)", header)
+    if not match:
+        raise ValueError(f"{case}: no cell count in constant/polyMesh/owner")
+    return int(match.group(1))

@@ -18,6 +18,7 @@ The weld frame is the template's: x along the weld (the substrate moves to
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -49,6 +50,8 @@ class BeadMetrics:
     peak_temperature: float = 0.0
     bead_section: float = 0.0
     fused_section: float = 0.0
+    #: Secant angle of the bead's flanks at the toes [deg] (post only)
+    wetting_angle: float = 0.0
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
@@ -167,9 +170,85 @@ def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
     if in_bead.any():
         result.bead_width = float(high[in_bead, 1].max() - low[in_bead, 1].min())
         result.bead_height = float(high[in_bead, 2].max() - surface_height)
+        in_slice = ~below & (slices == bead_slice)
+        result.wetting_angle = wetting_angle(centre[in_slice, 1], (alpha * span[:, 2])[in_slice],
+                                             low[in_bead, 1].min(), high[in_bead, 1].max())
     if result.fused_area + result.bead_area > 0:
         result.dilution = result.fused_area / (result.fused_area + result.bead_area)
     return result
+
+
+def wetting_angle(y: np.ndarray, metal_height: np.ndarray, toe_left: float,
+                  toe_right: float) -> float:
+    """Secant angle [deg] of the bead's flanks, the mean of both sides.
+
+    The section's profile is the metal height h(y) of each column of cells
+    (sum of alpha dz).  On each side the flank runs from the toe (the edge
+    of the bead width, h = 0) to where h first reaches half the bead's
+    height; the angle is atan(H/2 / that distance): on the mesh, the contact
+    angle cannot be resolved more finely than a cell.
+    """
+    columns = np.round(y, 9)
+    positions = np.unique(columns)
+    profile = np.array([metal_height[columns == c].sum() for c in positions])
+    if profile.max() <= 0:
+        return 0.0
+    half = 0.5 * profile.max()
+    reaches = positions[profile >= half]
+    run_left, run_right = reaches.min() - toe_left, toe_right - reaches.max()
+    angles = [np.degrees(np.arctan2(half, run)) for run in (run_left, run_right) if run > 0]
+    return float(np.mean(angles)) if angles else 90.0
+
+
+def expected_bead_area(case: Path) -> float:
+    """The steady bead's section [m2]: wire mass rate / (metal density x welding speed).
+
+    The mass balance no model escapes: what the wires feed leaves in the bead.
+    Read from the case's dropletSource (wires' density, feed speed and radius),
+    enthalpy-porosity welding speed and the metal's reference density.
+    """
+    from .foamcase import dictionary_scalar, dictionary_value
+
+    case = Path(case)
+    source = "constant/fvOptions"
+    wires = re.findall(r"^\s*(\w+)\s*$", dictionary_value(case, source, "wireDroplets/wires"), re.M)
+    common_density = dictionary_scalar(case, source, "wireDroplets/wireDensity")
+    mass_rate = 0.0
+    for wire in wires:
+        key = f"wireDroplets/wires/{wire}"
+        mass_rate += (common_density * dictionary_scalar(case, source, f"{key}/feedSpeed")
+                      * np.pi * dictionary_scalar(case, source, f"{key}/wireRadius") ** 2)
+    welding_speed = dictionary_scalar(case, source, "enthalpyPorosity/weldingSpeed")
+    return mass_rate / (Metal.from_case(case).reference_density * welding_speed)
+
+
+def configured_bead_section(case: Path) -> float | None:
+    """The bead section [m] the case's meltPoolMetrics function object uses, if any."""
+    from .foamcase import dictionary_scalar
+
+    try:
+        return dictionary_scalar(case, "system/controlDict", "functions/meltPoolMetrics/beadSection")
+    except KeyError:
+        return None
+
+
+def summary(case: Path, result: BeadMetrics, time: float) -> dict[str, float]:
+    """The figures a welding engineer compares, in mm, mm2, K and degrees (``--json``)."""
+    return {
+        "time_s": time,
+        "bead_area_mm2": 1e6 * result.bead_area,
+        "expected_bead_area_mm2": 1e6 * expected_bead_area(case),
+        "bead_width_mm": 1e3 * result.bead_width,
+        "bead_height_mm": 1e3 * result.bead_height,
+        "penetration_mm": 1e3 * result.penetration,
+        "dilution": result.dilution,
+        "wetting_angle_deg": result.wetting_angle,
+        "pool_length_mm": 1e3 * result.pool_length,
+        "pool_width_mm": 1e3 * result.pool_width,
+        "fused_area_mm2": 1e6 * result.fused_area,
+        "bead_section_mm": 1e3 * result.bead_section,
+        "peak_metal_temperature_K": result.peak_temperature,
+    }
 
 
 def _plotter():
@@ -236,13 +315,20 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
 
 def post_process(case: Path, output: Path | None = None, time: float | None = None,
                  surface_height: float = 0.0, bead_section: float | None = None,
-                 fusion_temperature_: float | None = None) -> tuple[BeadMetrics, list[Path]]:
-    """Metrics and pictures of ``case`` at ``time``; PNGs and metrics.csv in ``output``."""
+                 fusion_temperature_: float | None = None
+                 ) -> tuple[BeadMetrics, list[Path], float]:
+    """Metrics, pictures and the time read of ``case`` at ``time`` (default: latest).
+
+    PNGs and metrics.csv go to ``output``; the bead is measured at
+    ``bead_section``, by default where the case's meltPoolMetrics measures it.
+    """
     case = Path(case)
     output = Path(output or case / "pictures")
     output.mkdir(parents=True, exist_ok=True)
     grid = read_case(case, time)
     t_fusion = fusion_temperature_ or fusion_temperature(case)
+    if bead_section is None:
+        bead_section = configured_bead_section(case)
     result = metrics(grid, t_fusion, surface_height, bead_section)
 
     temperature = np.asarray(grid.cell_data["T"])
@@ -264,7 +350,7 @@ def post_process(case: Path, output: Path | None = None, time: float | None = No
         stream.write("time," + ",".join(values) + "\n")
         stream.write(f"{grid.field_data['time'][0]:.9g}," +
                      ",".join(f"{v:.9g}" for v in values.values()) + "\n")
-    return result, pictures
+    return result, pictures, float(grid.field_data['time'][0])
 
 
 def read_function_object_metrics(case: Path, name: str = "meltPoolMetrics") -> np.ndarray:
@@ -293,4 +379,5 @@ def format_metrics(result: BeadMetrics) -> str:
         f"peak metal T     {result.peak_temperature:8.1f} K",
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
         f"fused section x  {1e3 * result.fused_section:8.2f} mm",
+        f"wetting angle    {result.wetting_angle:8.1f} deg",
     ])

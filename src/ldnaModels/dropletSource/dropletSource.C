@@ -601,6 +601,21 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
 }
 
 
+void Foam::fv::dropletSource::logWire(const wireStream& wire) const
+{
+    if (log_)
+    {
+        const Time& time = mesh_.time();
+        const scalar elapsed = time.value() - time.startTime().value();
+        Info<< type() << ' ' << name_ << ": wire " << wire.name
+            << " added mass = " << wire.addedMass
+            << " kg, on time = " << wire.onTime
+            << " s, duty fraction = "
+            << (elapsed > 0 ? wire.onTime/elapsed : 0) << endl;
+    }
+}
+
+
 Foam::scalar Foam::fv::dropletSource::switchOnTime
 (
     const scalar nu,
@@ -723,15 +738,7 @@ void Foam::fv::dropletSource::update()
             wire.onTime += on;
         }
 
-        if (log_)
-        {
-            const scalar elapsed = t1 - time.startTime().value();
-            Info<< type() << ' ' << name_ << ": wire " << wire.name
-                << " added mass = " << wire.addedMass
-                << " kg, on time = " << wire.onTime
-                << " s, duty fraction = "
-                << (elapsed > 0 ? wire.onTime/elapsed : 0) << endl;
-        }
+        logWire(wire);
     }
 }
 
@@ -843,28 +850,24 @@ bool Foam::fv::dropletSource::insert
     {
         for (const scalar onset : pulseOnsets(wire.frequency, t0, t1))
         {
+            // Where the droplet has flown since it detached within the step
+            // (ballistically), so that its position does not depend on the
+            // time steps
+            const vector velocity = dropletVelocity(wire, onset);
             wire.addedMass += insertSphere
             (
                 mixture,
                 U,
                 wire,
-                centreAt(wire, onset),
+                centreAt(wire, onset) + (t1 - onset)*velocity,
                 radiusAt(wire, onset),
-                dropletVelocity(wire, onset)
+                velocity
             );
             inserted = true;
         }
         wire.onTime += switchOnTime(wire.frequency, t0, t1);
 
-        if (log_)
-        {
-            const scalar elapsed = t1 - time.startTime().value();
-            Info<< type() << ' ' << name_ << ": wire " << wire.name
-                << " added mass = " << wire.addedMass
-                << " kg, on time = " << wire.onTime
-                << " s, duty fraction = "
-                << (elapsed > 0 ? wire.onTime/elapsed : 0) << endl;
-        }
+        logWire(wire);
     }
 
     return inserted;

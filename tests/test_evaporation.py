@@ -216,9 +216,9 @@ marangoni
           f"[{low:.3e}, {high:.9f}], T within [{balances['T_min'].min():.1f}, "
           f"{balances['T_max'].max():.1f}] K, evaporated "
           f"{evaporation_log(log)[-1][1]:.4e} kg")
-    # Ran to the end time (to within half a time step)
-    # Ran to the end: the last step may pass the end time (no write time there)
-    assert balances["time"][-1] >= 2e-3 * (1 - 1e-9)
+    # Ran to the end time: OpenFOAM ends a run when less than half a step is left
+    last_step = balances["time"][-1] - balances["time"][-2]
+    assert balances["time"][-1] >= 2e-3 - 0.5 * last_step
     assert low > -1e-6 and high < 1 + 1e-6
     assert np.all(np.isfinite(temperature))
     assert balances["T_min"].min() > 200 and balances["T_max"].max() <= hot + 1e-6

@@ -144,7 +144,20 @@ def run_scene(case: Path, hard_case: HardCase) -> None:
     run_parallel(case, "ldnaFoam", N_RANKS)
 
 
-@pytest.mark.parametrize("hard_case", HARD_CASES, ids=[c.name for c in HARD_CASES])
+#: Known failures, with what was measured (strict: a fix makes them fail
+#: until the entry is removed)
+KNOWN_FAILURES = {
+    "irregular_start_8x_droplets":
+        "alpha undershoots to -1.4e-6 (bound -1e-6) 2.9 ms after the first 8x droplet is "
+        "inserted, in flight; -1.02e-6 with 40 limiter iterations instead of 20",
+}
+
+
+@pytest.mark.parametrize("hard_case", [
+    pytest.param(c, id=c.name,
+                 marks=[pytest.mark.xfail(strict=True, reason=KNOWN_FAILURES[c.name])]
+                 if c.name in KNOWN_FAILURES else [])
+    for c in HARD_CASES])
 def test_hard_case_stays_stable(ldna_case: Path, hard_case: HardCase) -> None:
     case = ldna_case
     run_scene(case, hard_case)

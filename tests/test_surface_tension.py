@@ -39,11 +39,13 @@ def cell_centres_2d(case: Path) -> tuple[np.ndarray, np.ndarray, float]:
     return x, z, h
 
 
-def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None:
-    """A liquid cylinder at rest: p_in - p_out = sigma/R, and hardly any flow."""
-    case = static_droplet_case
-    run(case, "ldnaFoam")
+def run_cylinder(case: Path) -> tuple[float, float, float]:
+    """Run the cylinder case: its pressure jump [Pa], sigma/R [Pa] and largest speed [m/s].
 
+    The jump is between the pressure plateaus three cells away from the
+    interface on either side.
+    """
+    run(case, "ldnaFoam")
     last = time_directories(case)[-1]
     p = read_internal_field(last / "p_rgh")
     velocity = read_internal_field(last / "U")
@@ -52,13 +54,17 @@ def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None
     origin = run(case, "foamDictionary -entry origin -value system/setAlphaFieldDict").output
     cx, _, cz = (float(v) for v in origin.strip().strip("()").split())
     r = np.hypot(x - cx, z - cz)
-
-    # Pressure plateaus three cells away from the interface on either side
     jump = p[r < radius - 3 * h].mean() - p[r > radius + 3 * h].mean()
+    laplace = dictionary_scalar(case, PROPERTIES, "sigma") / radius
+    return jump, laplace, float(np.linalg.norm(velocity, axis=1).max())
+
+
+def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None:
+    """A liquid cylinder at rest: p_in - p_out = sigma/R, and hardly any flow."""
+    case = static_droplet_case
+    jump, laplace, largest_speed = run_cylinder(case)
     sigma = dictionary_scalar(case, PROPERTIES, "sigma")
-    laplace = sigma / radius
     mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
-    largest_speed = np.linalg.norm(velocity, axis=1).max()
     print(f"pressure jump {jump:.2f} Pa, sigma/R = {laplace:.2f} Pa "
           f"({100 * (jump / laplace - 1):+.2f} %); largest speed {largest_speed:.4f} m/s, "
           f"limit {SPURIOUS_VELOCITY_SCALE * sigma / mu:.4f} m/s")
@@ -72,19 +78,7 @@ def test_capillary_force_is_zero_in_solid_metal(static_droplet_case: Path) -> No
     solidus = dictionary_scalar(case, PROPERTIES, "metal/solidus")
     run(case, f"foamDictionary -entry internalField -set 'uniform {solidus - 300:g}' 0/T",
         log_name="foamDictionary.T")
-    run(case, "ldnaFoam")
-
-    last = time_directories(case)[-1]
-    p = read_internal_field(last / "p_rgh")
-    velocity = read_internal_field(last / "U")
-    x, z, h = cell_centres_2d(case)
-    radius = dictionary_scalar(case, "system/setAlphaFieldDict", "radius")
-    origin = run(case, "foamDictionary -entry origin -value system/setAlphaFieldDict").output
-    cx, _, cz = (float(v) for v in origin.strip().strip("()").split())
-    r = np.hypot(x - cx, z - cz)
-    jump = p[r < radius - 3 * h].mean() - p[r > radius + 3 * h].mean()
-    laplace = dictionary_scalar(case, PROPERTIES, "sigma") / radius
-    largest_speed = np.linalg.norm(velocity, axis=1).max()
+    jump, laplace, largest_speed = run_cylinder(case)
     print(f"solid: pressure jump {jump:.3g} Pa (liquid: {laplace:.2f} Pa), "
           f"largest speed {largest_speed:.2e} m/s")
     assert abs(jump) < 1e-3 * laplace

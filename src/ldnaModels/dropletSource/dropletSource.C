@@ -388,7 +388,7 @@ void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
         return max(label(0), label(ceil(log2(templateLevel0Cell*perRadius/R))));
     };
 
-    if (insertion_ && cellsPerRadius < minCellsPerRadius)
+    if (insertion_ && !(cellsPerRadius >= minCellsPerRadius))
     {
         FatalIOErrorInFunction(coeffs_)
             << "Droplets of wire " << wire.name << " (radius " << R
@@ -400,7 +400,7 @@ void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
             << levelFor(minCellsPerRadius) << " or finer)"
             << exit(FatalIOError);
     }
-    if (cellsPerRadius < resolvedCellsPerRadius)
+    if (!(cellsPerRadius >= resolvedCellsPerRadius))
     {
         WarningInFunction
             << "Droplets of wire " << wire.name << " (radius " << R

@@ -21,8 +21,6 @@ from ldna import meshing
 from ldna.foamcase import dictionary_value, read_internal_field, run
 from ldna.foamdict import read_scalars, set_entry
 
-pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
-
 TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
 #: Relative cell-volume difference of the gmsh and block meshes: both place
 #: the same uniform points, written with the case's 8 significant digits

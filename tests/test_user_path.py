@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 from ldna.foamcase import PROJECT_DIR, time_directories
-from userpath import SHELLS, clean_env, run_as_user
+from userpath import SHELLS, run_as_user, user_command
 
 pytestmark = pytest.mark.user_path
 
@@ -97,8 +97,7 @@ def _kill_solver_in(directory: Path) -> int:
 def test_failed_scene_does_not_block_the_next_attempt(tmp_path: Path) -> None:
     case = tmp_path / "scene"
     command = scene_command(case, end_time=1.0)
-    env_args = [f"{k}={v}" for k, v in clean_env().items()]
-    scene = subprocess.Popen(["env", "-i", *env_args, "bash", "-c", command], cwd=PROJECT_DIR,
+    scene = subprocess.Popen(user_command(command), cwd=PROJECT_DIR,
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     # The solver is killed once it is running, as a cluster kills a job
     log = case / "log.ldnaFoam"

@@ -40,13 +40,18 @@ def clean_env(**extra: str) -> dict[str, str]:
     return env
 
 
+def user_command(command: str, shell: str = "plain", **extra_env: str) -> list[str]:
+    """The argument list that runs ``command`` with bash in a clean environment."""
+    return ["env", "-i", *(f"{k}={v}" for k, v in clean_env(**extra_env).items()),
+            "bash", "-c", SHELLS[shell] + command]
+
+
 def run_as_user(command: str, cwd: Path = PROJECT_DIR, shell: str = "plain",
                 timeout: float = 1800, **extra_env: str) -> Outcome:
     """Run ``command`` with bash in a clean environment from ``cwd``.
 
     ``shell`` is a key of :data:`SHELLS`: what the user has sourced before.
     """
-    proc = subprocess.run(["env", "-i", *(f"{k}={v}" for k, v in clean_env(**extra_env).items()),
-                           "bash", "-c", SHELLS[shell] + command],
-                          cwd=cwd, capture_output=True, text=True, timeout=timeout, check=False)
+    proc = subprocess.run(user_command(command, shell, **extra_env), cwd=cwd,
+                          capture_output=True, text=True, timeout=timeout, check=False)
     return Outcome(proc.returncode, proc.stdout + proc.stderr)

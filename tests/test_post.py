@@ -21,7 +21,7 @@ from ldna.foamcase import (dictionary_scalar, read_internal_field, run, run_para
                            write_internal_field)
 from ldna.foamdict import set_entry
 from ldna.post import (BeadMetrics, configured_bead_section, fusion_temperature, metrics,
-                       post_process, read_case, read_function_object_metrics)
+                       post_process, read_case, read_function_object_metrics, wetting_angle)
 from ldna.meshing import mesh_case
 
 #: Cell size of the synthetic case [m] (tests/cases/syntheticPool)
@@ -215,3 +215,46 @@ def test_function_object_and_post_agree_on_a_run(ldna_case: Path) -> None:
     assert written.bead_area > 0, "the droplets have built some bead"
     assert written.penetration > 0 and written.pool_length > 0, "the preset pool is still liquid"
     check_agreement(written, computed)
+
+
+#: Columns across the synthetic circular-cap bead (width 2 a) of the wetting-angle test
+CAP_COLUMNS = 400
+CAP_HALF_WIDTH = 7.5e-3
+
+
+@pytest.mark.unit
+@pytest.mark.parametrize("contact_angle", [20.0, 45.0, 60.0, 90.0])
+def test_wetting_angle_of_a_circular_cap(contact_angle: float) -> None:
+    """The secant angle of a circular-cap bead against its closed form.
+
+    A cap of half-width a and contact angle theta has radius R = a / sin(theta)
+    and height H = a tan(theta / 2); its flank reaches H / 2 at
+    |y| = sqrt(R^2 - (R - H / 2)^2), so the secant angle is
+    atan(H / 2 / (a - |y|)).  Columns of width a / 200 give it within 0.5 deg.
+    """
+    a = CAP_HALF_WIDTH
+    theta = math.radians(contact_angle)
+    radius = a / math.sin(theta)
+    height = a * math.tan(theta / 2)
+    y = np.linspace(-a, a, CAP_COLUMNS + 1)
+    y = 0.5 * (y[1:] + y[:-1])
+    centre_height = height - radius
+    profile = np.clip(np.sqrt(np.clip(radius**2 - y**2, 0, None)) + centre_height, 0, None)
+    flank = math.sqrt(radius**2 - (radius - height / 2) ** 2)
+    expected = math.degrees(math.atan2(height / 2, a - flank))
+    measured = wetting_angle(y, profile, -a, a)
+    print(f"contact angle {contact_angle:g}: secant {expected:.2f}, measured {measured:.2f}")
+    assert measured == pytest.approx(expected, abs=0.5)
+    assert 0 < measured < 90
+
+
+@pytest.mark.unit
+def test_wetting_angle_of_flat_and_square_deposits() -> None:
+    """No metal: angle 0; a rectangle of height H whose toes lie d outside its
+    outermost columns: atan(H / 2 / d), near 90 degrees."""
+    y = np.linspace(-1e-3, 1e-3, 201)
+    assert wetting_angle(y, np.zeros_like(y), -1e-3, 1e-3) == 0.0
+    height, toe_gap = 1e-3, 1e-5
+    expected = math.degrees(math.atan2(height / 2, toe_gap))
+    measured = wetting_angle(y, np.full_like(y, height), -1e-3 - toe_gap, 1e-3 + toe_gap)
+    assert measured == pytest.approx(expected, rel=1e-9)

@@ -53,9 +53,15 @@ def _accuracy(args: argparse.Namespace) -> int:
     from . import accuracy
 
     scene = None if args.scene == "auto" else accuracy.SCENES[args.scene]
+    start = None
+    if args.start_from:
+        if args.start_time is None:
+            print("ldna accuracy: --start-from needs --start-time", file=sys.stderr)
+            return 2
+        start = accuracy.StartState(Path(args.start_from), args.start_time)
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
-                                      end_time=args.end_time, n_procs=args.np)
+                                      end_time=args.end_time, n_procs=args.np, start=start)
     print(accuracy.markdown(study))
     for path in paths:
         print(path)
@@ -161,12 +167,17 @@ def build_parser() -> argparse.ArgumentParser:
     accuracy.add_argument("--scene", choices=("auto", "ldna", "stefan"), default="auto",
                           help="kind of scene [from the case's caseParameters]")
     accuracy.add_argument("--levels", type=_float_list, metavar="L1,L2,...",
-                          help="mesh levels; LDNA: 0..3, halves allowed (cells of "
-                               "1.2 mm/2^level) [0,0.5,1,1.5]; Stefan: 25*2^level cells "
+                          help="mesh levels; LDNA: 0..3, halves allowed (process-zone "
+                               "cells of 0.45 mm/2^level) [0,0.5,1]; Stefan: 25*2^level cells "
                                "and time steps of 16 ms/2^level [0,1,2,3,4]")
     accuracy.add_argument("--max-co", type=_float_list, metavar="C1,C2,...",
                           help="also vary maxCo and maxAlphaCo (adjustable time step)")
     accuracy.add_argument("--end-time", type=float, help="simulated time of every run [s]")
+    accuracy.add_argument("--start-from", metavar="RUN",
+                          help="start every run from a developed state of this finished run "
+                               "(mapped onto each level's mesh; with --start-time)")
+    accuracy.add_argument("--start-time", type=float, metavar="T",
+                          help="the reconstructed time of --start-from to start at [s]")
     accuracy.add_argument("--np", type=int, default=1, help="MPI ranks per run (1: serial)")
     accuracy.set_defaults(func=_accuracy)
 

@@ -1,23 +1,31 @@
-"""Laser heating and free-surface heat losses on a flat metal slab.
+"""Laser heating and free-surface heat losses.
 
 A closed 8 x 8 x 4 mm box of argon over a 2 mm slab of 316L (0.25 mm
 cells, surface on cell faces, no gravity) is lit by a vertical beam of
-radius 1 mm for one time step.  The laser logs its power balance every step
-and writes the absorbed power density; the tests check them against the
-beam power, the Beer-Lambert law and Monte-Carlo statistics, and the
-heat-loss model against the Stefan-Boltzmann law.
+radius 1 mm for one time step.  The laser writes its target and power
+balance every step (postProcessing/laser/0/power.dat) and the absorbed
+power density; the tests check them against the beam power, the Fresnel
+equations, the Beer-Lambert law and Monte-Carlo statistics, on meshes with
+cells larger and smaller than the beam and unequal heights at the surface,
+in a V-groove (multiple reflections) and under a metal sphere (shadowing),
+and the heat-loss model against the Stefan-Boltzmann law.
 """
 from __future__ import annotations
 
 import math
 import re
+import shutil
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 import pytest
 
-from ldna.foamcase import read_internal_field, run, run_parallel, time_directories
+from ldna.foamcase import (read_function_object, read_internal_field, run, run_parallel,
+                           time_directories, write_internal_field)
 from ldna.foamdict import set_entry
+
+from conftest import TEST_CASES
 
 #: Beam power [W], radius [m] and the slab's absorptivity in these tests
 POWER = 1000.0
@@ -31,9 +39,13 @@ SURFACE_AREA = 8e-3 * 8e-3
 #: Default Beer-Lambert attenuation: -ln(exp(-4))/1 mm (paper eq. 10-11)
 MU = 4000.0
 
-#: Allowed errors (issue 4)
+#: Allowed errors: absorbed power on the flat slab, and on any mesh
 ABSORBED_TOLERANCE = 0.01
-MONTE_CARLO_BALANCE_TOLERANCE = 0.005
+ANY_MESH_TOLERANCE = 0.005
+PARALLEL_TOLERANCE = 0.005
+V_GROOVE_TOLERANCE = 0.01
+SHADOW_TOLERANCE = 0.02
+BALANCE_TOLERANCE = 1e-9
 DECAY_TOLERANCE = 0.05
 RADIATION_TOLERANCE = 0.01
 #: Fresnel test: a narrower beam (0.5 mm), so that even at 75 degrees its
@@ -43,10 +55,9 @@ RADIATION_TOLERANCE = 0.01
 FRESNEL_BEAM_RADIUS = 0.5e-3
 FRESNEL_TOLERANCE = 0.002
 
-BALANCE = re.compile(
-    r"^laserHeatSource \S+: t = (\S+) s, target = \((\S+) (\S+) (\S+)\), direction = \(.*\), "
-    r"emitted = (\S+) W, absorbed by metal = (\S+) W, absorbed by gas = (\S+) W, "
-    r"escaped = (\S+) W, imbalance = (\S+) W$", re.M)
+#: Columns of postProcessing/laser/<time>/power.dat
+BALANCE_COLUMNS = ("time", "x", "y", "z", "emitted", "metal", "gas", "reflected", "escaped",
+                   "stopped", "imbalance")
 
 
 def laser_entry(model: str, extra: str = "", coeffs: str = "") -> str:
@@ -77,12 +88,25 @@ def write_fv_options(case: Path, entries: str) -> None:
     (case / "constant" / "fvOptions").write_text(header + entries + "\n")
 
 
-def laser_balances(log: Path) -> np.ndarray:
-    """The laser's power balance per time step from a solver log."""
-    rows = [tuple(float(v) for v in m.groups()) for m in BALANCE.finditer(log.read_text())]
-    assert rows, f"no laser balance in {log}"
-    return np.array(rows, dtype=[(n, float) for n in (
-        "time", "x", "y", "z", "emitted", "metal", "gas", "escaped", "imbalance")])
+def laser_balances(case: Path) -> np.ndarray:
+    """The laser's target and power balance per time step (its postProcessing table)."""
+    rows = read_function_object(case, "laser", "power.dat")
+    assert len(rows), f"no laser table in {case}/postProcessing/laser"
+    return np.array([tuple(row) for row in rows], dtype=[(n, float) for n in BALANCE_COLUMNS])
+
+
+def absorbed_total(balance: np.ndarray) -> np.ndarray:
+    """Power absorbed in metal and gas cells [W]."""
+    return balance["metal"] + balance["gas"]
+
+
+def assert_balance_closes(balance: np.ndarray) -> None:
+    """Emitted = absorbed + reflected + escaped + stopped, every step, and no negative share."""
+    booked = (absorbed_total(balance) + balance["reflected"] + balance["escaped"]
+              + balance["stopped"])
+    assert np.abs(balance["emitted"] - booked).max() < BALANCE_TOLERANCE * POWER
+    for share in ("metal", "gas", "reflected", "escaped", "stopped"):
+        assert balance[share].min() >= -BALANCE_TOLERANCE * POWER, share
 
 
 def absorbed_per_cell(case: Path) -> np.ndarray:
@@ -99,21 +123,31 @@ def cell_centres(case: Path) -> np.ndarray:
                      (k.ravel() + 0.5) * CELL], axis=1)
 
 
-@pytest.mark.parametrize("model", ["gaussianSurface", "beerLambert"])
+MODELS = ("gaussianSurface", "beerLambert", "monteCarlo")
+
+
+@pytest.mark.parametrize("model", MODELS)
 def test_absorbed_power_is_a_times_P(laser_slab_case: Path, model: str) -> None:
+    """A flat slab absorbs a P with each model at its default settings.
+
+    Monte-Carlo rays reflect at the surface and leave (nothing sends them
+    back), Beer-Lambert rays lose all their power in the 2 mm slab
+    (exp(-8) passes), surface rays give a at the surface.
+    """
     case = laser_slab_case
     write_fv_options(case, laser_entry(model))
     run(case, "ldnaFoam")
 
-    balance = laser_balances(case / "log.ldnaFoam")[-1]
+    balance = laser_balances(case)
     absorbed = absorbed_per_cell(case).sum()
     expected = ABSORPTIVITY * POWER
-    print(f"{model}: absorbed {absorbed:.4f} W (log: metal {balance['metal']:.4f}, gas "
-          f"{balance['gas']:.4f}), a P = {expected:.4f} W, escaped {balance['escaped']:.4f} W")
+    print(f"{model}: absorbed {absorbed:.4f} W (table: metal {balance['metal'][-1]:.4f}, "
+          f"gas {balance['gas'][-1]:.4f}), a P = {expected:.4f} W, reflected "
+          f"{balance['reflected'][-1]:.4f} W, escaped {balance['escaped'][-1]:.4f} W")
     assert abs(absorbed - expected) / expected < ABSORBED_TOLERANCE
-    # The log books the same power, and what is not absorbed escapes
-    assert balance["metal"] + balance["gas"] == pytest.approx(absorbed, rel=1e-6)
-    assert abs(balance["emitted"] - absorbed - balance["escaped"]) < 1e-6 * POWER
+    # The table books the power of the field, and the balance closes
+    assert absorbed_total(balance)[-1] == pytest.approx(absorbed, rel=1e-6)
+    assert_balance_closes(balance)
 
 
 def test_beer_lambert_decays_exponentially(laser_slab_case: Path) -> None:
@@ -136,81 +170,69 @@ def test_beer_lambert_decays_exponentially(laser_slab_case: Path) -> None:
     assert absorbed[z > CENTRE[2]].sum() < 1e-9 * POWER
 
 
-def test_monte_carlo_balance_and_noise(laser_slab_case: Path) -> None:
-    """Absorbed + escaped = P; the scatter of the absorbed total falls like 1/sqrt(N).
+def test_monte_carlo_sampling_noise(laser_slab_case: Path) -> None:
+    """The Monte-Carlo beam's footprint converges like 1/sqrt(N).
 
-    Each step draws new rays (the seed advances with the time index), so one
-    run of eight steps gives eight independent samples of the absorbed power.
+    On the flat slab every ray gives a at the surface, so the absorbed total
+    is a P at any N; where the rays land is random.  The power absorbed
+    in the cells within one beam radius of the target (about 95 % of a P
+    for the Gaussian of eq. 48) scatters from step to step (each step draws
+    new rays) like 1/sqrt(N).
     """
     case = laser_slab_case
     steps = 8
     set_entry(case / "system" / "controlDict", "endTime", f"{steps * 1e-5:g}")
+    set_entry(case / "system" / "controlDict", "writeInterval", "1")
+    centres = cell_centres(case)
+    inside = np.hypot(centres[:, 0] - CENTRE[0], centres[:, 1] - CENTRE[1]) < BEAM_RADIUS
     spreads = {}
     for n_rays in (250, 1000, 4000):
         write_fv_options(case, laser_entry("monteCarlo", coeffs=f"nRays {n_rays}; seed 7;"))
         run(case, "ldnaFoam", log_name=f"ldnaFoam.{n_rays}")
-        balances = laser_balances(case / f"log.ldnaFoam.{n_rays}")
-        assert len(balances) == steps
-        absorbed = balances["metal"] + balances["gas"]
-        worst = np.max(np.abs(absorbed + balances["escaped"] - POWER)) / POWER
-        assert worst < MONTE_CARLO_BALANCE_TOLERANCE
-        spreads[n_rays] = absorbed.std(ddof=1)
-        print(f"N = {n_rays}: absorbed {absorbed.mean():.2f} +- {spreads[n_rays]:.2f} W, "
-              f"worst balance error {100 * worst:.2e} %")
-    # The written field (last step) holds what the log says was absorbed
-    field_total = absorbed_per_cell(case).sum()
-    assert field_total == pytest.approx(absorbed[-1], rel=1e-6)
+        balance = laser_balances(case)
+        assert len(balance) == steps
+        assert_balance_closes(balance)
+        assert np.abs(absorbed_total(balance) - ABSORPTIVITY * POWER).max() < (
+            ABSORBED_TOLERANCE * ABSORPTIVITY * POWER)
+        central = np.array([
+            (read_internal_field(time / "laserPowerDensity") * CELL**3)[inside].sum()
+            for time in time_directories(case)[1:]])
+        spreads[n_rays] = central.std(ddof=1)
+        print(f"N = {n_rays}: within r_l {central.mean():.2f} +- {spreads[n_rays]:.2f} W")
 
     ns = np.array(sorted(spreads), dtype=float)
     slope = np.polyfit(np.log(ns), np.log([spreads[n] for n in sorted(spreads)]), 1)[0]
-    print(f"scatter of the absorbed power ~ N^{slope:.3f} (expected -0.5)")
+    print(f"scatter of the central power ~ N^{slope:.3f} (expected -0.5)")
     assert -0.8 < slope < -0.2
 
 
-def test_serial_and_parallel_agree(laser_slab_case: Path) -> None:
+@pytest.mark.parametrize("model", ("beerLambert", "monteCarlo"))
+def test_serial_and_parallel_agree(laser_slab_case: Path, model: str) -> None:
     """A tilted beam crosses the processor boundary at x = 4 mm.
 
     Beer-Lambert rays are deterministic: the decomposed run must absorb the
-    same power in every cell.  Monte-Carlo rays scatter with per-processor
-    random numbers: the totals agree within the Monte-Carlo noise, measured
-    as the spread between steps.
+    same power in every cell.  Monte-Carlo rays start the same on every
+    processor count; the totals agree within 0.5 %.
     """
     case = laser_slab_case
-    tilt = "angle 30;"
     run(case, "decomposePar")
-
-    write_fv_options(case, laser_entry("beerLambert", extra=tilt))
+    write_fv_options(case, laser_entry(model, extra="angle 30;"))
     run(case, "ldnaFoam", log_name="ldnaFoam.serial")
     serial = absorbed_per_cell(case)
+    serial_balance = laser_balances(case)
     run_parallel(case, "ldnaFoam", 2, log_name="ldnaFoam.parallel")
     run(case, "reconstructPar -latestTime", log_name="reconstructPar")
     parallel = absorbed_per_cell(case)
-    difference = np.abs(serial - parallel).max() / serial.max()
-    print(f"Beer-Lambert: total {serial.sum():.6f} W serial, {parallel.sum():.6f} W parallel, "
-          f"largest cell difference {difference:.2e} of the peak")
-    assert parallel.sum() == pytest.approx(serial.sum(), rel=1e-9)
-    assert difference < 1e-9
-
-    # Monte-Carlo: a few steps each, so the comparison uses the measured
-    # step-to-step spread of the absorbed total
-    steps = 4
-    set_entry(case / "system" / "controlDict", "endTime", f"{steps * 1e-5:g}")
-    write_fv_options(case, laser_entry("monteCarlo", extra=tilt, coeffs="nRays 10000;"))
-    run(case, "ldnaFoam", log_name="ldnaFoam.mc.serial")
-    run_parallel(case, "ldnaFoam", 2, log_name="ldnaFoam.mc.parallel")
-    samples = {}
-    for label in ("serial", "parallel"):
-        balances = laser_balances(case / f"log.ldnaFoam.mc.{label}")
-        assert len(balances) == steps
-        samples[label] = balances["metal"] + balances["gas"]
-        worst = np.abs(balances["emitted"] - samples[label] - balances["escaped"]).max()
-        assert worst < 1e-6 * POWER
-    difference = samples["parallel"].mean() - samples["serial"].mean()
-    standard_error = math.sqrt(sum(x.var(ddof=1) for x in samples.values()) / steps)
-    print(f"Monte-Carlo: serial {samples['serial'].mean():.2f} W, parallel "
-          f"{samples['parallel'].mean():.2f} W, standard error of the difference "
-          f"{standard_error:.2f} W")
-    assert abs(difference) < 4 * standard_error
+    parallel_balance = laser_balances(case)
+    assert_balance_closes(parallel_balance)
+    print(f"{model}: total {serial.sum():.6f} W serial, {parallel.sum():.6f} W parallel")
+    assert parallel.sum() == pytest.approx(serial.sum(), rel=PARALLEL_TOLERANCE)
+    assert absorbed_total(parallel_balance)[-1] == pytest.approx(
+        absorbed_total(serial_balance)[-1], rel=PARALLEL_TOLERANCE)
+    if model == "beerLambert":
+        difference = np.abs(serial - parallel).max() / serial.max()
+        print(f"largest cell difference {difference:.2e} of the peak")
+        assert difference < 1e-9
 
 
 def fresnel_absorptivity(theta: float, n: float, k: float) -> float:
@@ -226,26 +248,26 @@ def fresnel_absorptivity(theta: float, n: float, k: float) -> float:
 @pytest.mark.parametrize("angle", [0.0, 45.0, 75.0])
 def test_fresnel_absorptivity_follows_the_incidence_angle(laser_slab_case: Path,
                                                           angle: float) -> None:
-    """Iron at 1.03 um (n 3.2, k 4.2) lit at the laser angle, no scattering.
+    """Iron at 1.03 um (n 3.2, k 4.2) lit at the laser angle, default settings.
 
-    Every ray enters the flat slab at the laser angle and gives up the share
-    a(theta) at its first interaction (maxScatteringEvents 0 discards the
-    rest), so the absorbed power is a(theta) P, whatever the random depths.
+    Every ray meets the flat slab at the laser angle, gives up a(theta) and
+    is reflected away from it, so the absorbed power is a(theta) P.
     """
     case = laser_slab_case
     n, k = 3.2, 4.2
-    entry = laser_entry("monteCarlo", extra=f"angle {angle};",
-                        coeffs=f"nRays 2000; maxScatteringEvents 0; fresnel {{ n {n}; k {k}; }}")
+    entry = laser_entry("monteCarlo", extra=f"angle {angle};")
+    entry = entry.replace(f"absorptivity    constant {ABSORPTIVITY};",
+                          f"fresnel {{ n {n}; k {k}; }}")
     write_fv_options(case, entry.replace(f"beamRadius      {BEAM_RADIUS}",
                                          f"beamRadius      {FRESNEL_BEAM_RADIUS}"))
     run(case, "ldnaFoam")
 
-    balance = laser_balances(case / "log.ldnaFoam")[-1]
-    absorbed = balance["metal"] + balance["gas"]
+    balance = laser_balances(case)
+    absorbed = absorbed_total(balance)[-1]
     expected = fresnel_absorptivity(math.radians(angle), n, k) * POWER
     print(f"angle {angle}: absorbed {absorbed:.4f} W, a(theta) P = {expected:.4f} W")
-    assert abs(absorbed - expected) / expected < FRESNEL_TOLERANCE
-    assert abs(balance["emitted"] - absorbed - balance["escaped"]) < 1e-6 * POWER
+    assert abs(absorbed - expected) / expected < ABSORBED_TOLERANCE
+    assert_balance_closes(balance)
 
 
 def test_beam_follows_the_oscillation(laser_slab_case: Path) -> None:
@@ -261,7 +283,7 @@ def test_beam_follows_the_oscillation(laser_slab_case: Path) -> None:
               "offset constant (0.0005 0 0);"))
     run(case, "ldnaFoam")
 
-    balances = laser_balances(case / "log.ldnaFoam")
+    balances = laser_balances(case)
     expected_y = CENTRE[1] + amplitude * np.sin(2 * np.pi * frequency * balances["time"])
     assert np.abs(balances["y"] - expected_y).max() < 1e-12
     assert np.abs(balances["x"] - (CENTRE[0] + 5e-4)).max() < 1e-12
@@ -273,6 +295,209 @@ def test_beam_follows_the_oscillation(laser_slab_case: Path) -> None:
           f"y {centroid[1] * 1e3:.4f} mm")
     assert abs(centroid[1] - balances["y"][-1]) < 0.2 * CELL
     assert abs(centroid[0] - balances["x"][-1]) < 0.2 * CELL
+
+
+def box_mesh(case: Path, x: tuple[float, float, int], y: tuple[float, float, int],
+             z_levels: list[float], z_cells: list[int]) -> None:
+    """A box [mm] of stacked blocks: x and y (start, end, cells), blocks between
+    the z_levels with z_cells layers each (cells of unequal heights where
+    blocks meet), all faces walls.  Meshed with blockMesh, alpha.metal reset."""
+    text = (case / "system" / "blockMeshDict").read_text()
+    head = text.partition("vertices")[0]
+    (x0, x1, nx), (y0, y1, ny) = x, y
+    vertices = "\n".join(f"    ({x0} {y0} {z}) ({x1} {y0} {z}) ({x1} {y1} {z}) ({x0} {y1} {z})"
+                         for z in z_levels)
+    blocks, sides = [], []
+    for k, nz in enumerate(z_cells):
+        a, b = 4 * k, 4 * (k + 1)
+        blocks.append(f"    hex ({a} {a + 1} {a + 2} {a + 3} {b} {b + 1} {b + 2} {b + 3}) "
+                      f"({nx} {ny} {nz}) simpleGrading (1 1 1)")
+        sides.append(f"({a} {b} {b + 3} {a + 3}) ({a + 1} {a + 2} {b + 2} {b + 1}) "
+                     f"({a} {a + 1} {b + 1} {b}) ({a + 3} {b + 3} {b + 2} {a + 2})")
+    top = 4 * len(z_cells)
+    faces = [f"(0 3 2 1) ({top} {top + 1} {top + 2} {top + 3})"] + sides
+    (case / "system" / "blockMeshDict").write_text(head + f"""vertices
+(
+{vertices}
+);
+
+blocks
+(
+{chr(10).join(blocks)}
+);
+
+boundary
+(
+    walls
+    {{
+        type wall;
+        faces
+        (
+            {chr(10).join("            " + f for f in faces).strip()}
+        );
+    }}
+);
+""")
+    run(case, "blockMesh")
+    shutil.copy(TEST_CASES / "laserSlab" / "0" / "alpha.metal", case / "0" / "alpha.metal")
+
+
+def cell_geometry(case: Path) -> tuple[np.ndarray, np.ndarray]:
+    """Cell centres and sizes (dx, dy, dz) of a box mesh of cuboid cells [m]."""
+    run(case, "postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+    run(case, "postProcess -func writeCellVolumes -time 0", log_name="writeCellVolumes")
+    centres = read_internal_field(case / "0" / "C")
+    volumes = read_internal_field(case / "0" / "V")
+    xs, ys = np.unique(centres[:, 0]), np.unique(centres[:, 1])
+    dx, dy = xs[1] - xs[0], ys[1] - ys[0]
+    sizes = np.stack([np.full(len(centres), dx), np.full(len(centres), dy),
+                      volumes / (dx * dy)], axis=1)
+    return centres, sizes
+
+
+def fraction_below(centres: np.ndarray, sizes: np.ndarray, height: Callable,
+                   samples: int = 8) -> np.ndarray:
+    """Volume fraction of each cell below z = height(x, y) [m], sampled on
+    samples x samples columns per cell (exact for a surface flat in a column)."""
+    offsets = (np.arange(samples) + 0.5) / samples - 0.5
+    fraction = np.zeros(len(centres))
+    bottom = centres[:, 2] - 0.5 * sizes[:, 2]
+    for ox in offsets:
+        for oy in offsets:
+            top = height(centres[:, 0] + ox * sizes[:, 0], centres[:, 1] + oy * sizes[:, 1])
+            fraction += np.clip((top - bottom) / sizes[:, 2], 0.0, 1.0)
+    return fraction / samples**2
+
+
+#: Meshes of the any-mesh test on the 8 x 8 x 4 mm box: (cells across,
+#: z levels [mm], layers per block, surface height [mm]): cells of 2 mm
+#: (twice the beam radius), of 0.125 mm, of unequal heights at the surface
+#: (0.5 mm below, 0.2 mm above), and a surface inside a layer of cells
+#: (metal fraction 0.4 in the interface cells)
+ANY_MESHES = {
+    "cells_larger_than_the_beam": (4, [0, 2, 4], [1, 1], 2.0),
+    "cells_smaller_than_the_beam": (64, [0, 1.5, 2, 4], [2, 4, 16], 2.0),
+    "unequal_heights": (20, [0, 2, 4], [4, 10], 2.0),
+    "surface_inside_cells": (32, [0, 4], [16], 2.1),
+}
+
+
+@pytest.mark.parametrize("model", MODELS)
+@pytest.mark.parametrize("mesh", list(ANY_MESHES))
+def test_configured_power_on_any_mesh(laser_slab_case: Path, model: str, mesh: str) -> None:
+    """The absorbed power is a P within 0.5 % whatever the cells at the surface."""
+    case = laser_slab_case
+    across, z_levels, z_cells, surface = ANY_MESHES[mesh]
+    box_mesh(case, (0, 8, across), (0, 8, across), z_levels, z_cells)
+    centres, sizes = cell_geometry(case)
+    alpha = fraction_below(centres, sizes, lambda x, y: np.full_like(x, surface * 1e-3))
+    write_internal_field(case / "0" / "alpha.metal", alpha)
+    write_fv_options(case, laser_entry(model))
+    run(case, "ldnaFoam")
+
+    balance = laser_balances(case)
+    absorbed = absorbed_total(balance)[-1]
+    expected = ABSORPTIVITY * POWER
+    print(f"{mesh}, {model}: absorbed {absorbed:.4f} W, a P = {expected:.4f} W")
+    assert abs(absorbed - expected) / expected < ANY_MESH_TOLERANCE
+    assert_balance_closes(balance)
+
+
+#: V-groove: 45 degree walls meeting at x = 4 mm, z = 0.5 mm, up to the
+#: 4 mm top; the beam (radius 0.5 mm) lights the left wall only, 2 mm from
+#: the bottom, so every ray meets it at 45 degrees, crosses to the right
+#: wall and leaves upwards: 1 - (1 - a)^2 absorbed
+GROOVE_BOTTOM = (4e-3, 0.5e-3)
+GROOVE_BEAM_X = 2.2e-3
+GROOVE_BEAM_RADIUS = 0.5e-3
+
+
+@pytest.mark.parametrize("n_procs", [1, 2])
+def test_monte_carlo_multiple_reflections_in_a_v_groove(laser_slab_case: Path,
+                                                        n_procs: int) -> None:
+    case = laser_slab_case
+    box_mesh(case, (0, 8, 64), (3, 5, 16), [0, 4], [32])
+    centres, sizes = cell_geometry(case)
+    bottom_x, bottom_z = GROOVE_BOTTOM
+    alpha = fraction_below(centres, sizes,
+                           lambda x, y: np.minimum(bottom_z + np.abs(x - bottom_x), 4e-3))
+    write_internal_field(case / "0" / "alpha.metal", alpha)
+    entry = laser_entry("monteCarlo")
+    entry = entry.replace(f"position        ({CENTRE[0]} {CENTRE[1]} {CENTRE[2]})",
+                          f"position        ({GROOVE_BEAM_X} {CENTRE[1]} {CENTRE[2]})")
+    write_fv_options(case, entry.replace(f"beamRadius      {BEAM_RADIUS}",
+                                         f"beamRadius      {GROOVE_BEAM_RADIUS}"))
+    if n_procs > 1:
+        run(case, "decomposePar")
+        run_parallel(case, "ldnaFoam", n_procs)
+    else:
+        run(case, "ldnaFoam")
+
+    balance = laser_balances(case)
+    absorbed = absorbed_total(balance)[-1]
+    expected = (1 - (1 - ABSORPTIVITY) ** 2) * POWER
+    print(f"V-groove on {n_procs} rank(s): absorbed {absorbed:.3f} W, (1 - (1 - a)^2) P = "
+          f"{expected:.3f} W; reflected {balance['reflected'][-1]:.3f} W")
+    assert abs(absorbed - expected) / expected < V_GROOVE_TOLERANCE
+    assert_balance_closes(balance)
+
+
+#: Shadowing: a metal sphere of radius 0.6 mm centred 1 mm above the slab
+#: surface, on the beam axis (radius 1 mm), in 0.1 mm cells over a 4 x 4 mm
+#: box around the target (the beam's 2 radii)
+SPHERE_RADIUS = 0.6e-3
+SPHERE_HEIGHT = 1.0e-3
+
+
+def sphere_shadow(mu: float | None) -> float:
+    """Share of the Gaussian beam (eq. 48) the sphere takes out: all rays that
+    meet it, or with Beer-Lambert attenuation mu [1/m] 1 - exp(-mu chord)."""
+    rho = np.linspace(0.0, SPHERE_RADIUS, 20001)
+    weight = 6 * rho / BEAM_RADIUS**2 * np.exp(-3 * rho**2 / BEAM_RADIUS**2)
+    blocked = np.ones_like(rho) if mu is None else (
+        1 - np.exp(-mu * 2 * np.sqrt(np.clip(SPHERE_RADIUS**2 - rho**2, 0, None))))
+    return float(np.trapezoid(weight * blocked, rho))
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_metal_in_the_beam_shades_the_surface(laser_slab_case: Path, model: str) -> None:
+    """A sphere in the beam takes its share; the slab beneath gets the rest.
+
+    Monte-Carlo rays reflected by the sphere may land on the slab; without
+    tracing reflections (maxScatteringEvents 0) the slab's power is
+    a P (1 - share) for every model, the share being the beam's power
+    through the sphere's disk (Beer-Lambert: what the chord attenuates).
+    """
+    case = laser_slab_case
+    box_mesh(case, (2, 6, 40), (2, 6, 40), [0, 2, 4], [10, 20])
+    centres, sizes = cell_geometry(case)
+    alpha = fraction_below(centres, sizes, lambda x, y: np.full_like(x, CENTRE[2]))
+    # The sphere by volume fraction: 4^3 samples per cell
+    centre = np.array([CENTRE[0], CENTRE[1], CENTRE[2] + SPHERE_HEIGHT])
+    h = sizes[:, 0].max()
+    offsets = ((np.arange(4) + 0.5) / 4 - 0.5) * h
+    near = np.linalg.norm(centres - centre, axis=1) < SPHERE_RADIUS + h
+    inside = np.zeros(near.sum())
+    for ox in offsets:
+        for oy in offsets:
+            for oz in offsets:
+                inside += np.linalg.norm(centres[near] + (ox, oy, oz) - centre,
+                                         axis=1) < SPHERE_RADIUS
+    alpha[near] = np.maximum(alpha[near], inside / 64)
+    write_internal_field(case / "0" / "alpha.metal", alpha)
+    coeffs = "maxScatteringEvents 0;" if model == "monteCarlo" else ""
+    write_fv_options(case, laser_entry(model, coeffs=coeffs))
+    run(case, "ldnaFoam")
+
+    last = time_directories(case)[-1]
+    absorbed = read_internal_field(last / "laserPowerDensity") * sizes.prod(axis=1)
+    slab = absorbed[centres[:, 2] < CENTRE[2]].sum()
+    share = sphere_shadow(MU if model == "beerLambert" else None)
+    expected = ABSORPTIVITY * POWER * (1 - share)
+    print(f"{model}: slab {slab:.3f} W, a P (1 - share {share:.4f}) = {expected:.3f} W; "
+          f"sphere {absorbed[centres[:, 2] > CENTRE[2]].sum():.3f} W")
+    assert abs(slab - expected) < SHADOW_TOLERANCE * ABSORPTIVITY * POWER
+    assert_balance_closes(laser_balances(case))
 
 
 def test_radiation_loss_of_a_hot_surface(laser_slab_case: Path) -> None:
@@ -304,7 +529,12 @@ BAD_INPUTS = [
     ("unknown absorption model", laser_entry("rayTracing"), ["absorptionModel", "rayTracing"]),
     ("zero beam radius", laser_entry("beerLambert").replace(f"beamRadius      {BEAM_RADIUS}",
                                                             "beamRadius      0"),
-     ["beamRadius", "> 0"]),
+     ["beamRadius", "(0, 0.1]"]),
+    ("misspelt entry", laser_entry("beerLambert", extra="oscillationAmplitude0 1e-3;"),
+     ["oscillationAmplitude0", "did you mean", "oscillationAmplitude"]),
+    ("power of 1e300 W", laser_entry("gaussianSurface").replace(
+        f"power           constant {POWER}", "power           constant 1e300"),
+     ["power", "1e+300", "[0, 1000000]"]),
     ("absorptivity above 1", laser_entry("gaussianSurface").replace(
         f"absorptivity    constant {ABSORPTIVITY}", "absorptivity    constant 1.5"),
      ["absorptivity", "[0, 1]"]),

@@ -3,8 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "laserRay.H"
-#include "mathematicalConstants.H"
-#include <complex>
+#include "laserAbsorptionModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -19,39 +18,27 @@ namespace Foam
 Foam::laserRay::trackingData::trackingData
 (
     Cloud<laserRay>& cloud,
+    const laserAbsorptionModel& model,
     const scalarField& alpha,
-    const scalarField& absorptivity,
+    const scalarField& T,
     const vectorField& normal,
-    const scalar mu,
-    const bool monteCarlo,
-    const bool specular,
-    const bool fresnel,
-    const scalar nRefraction,
-    const scalar kExtinction,
     const scalar segmentLength,
-    const label maxEvents,
     const scalar powerCutoff,
     Random& rndGen,
     scalarField& absorbed
 )
 :
     particle::trackingData(cloud),
+    model(model),
     alpha(alpha),
-    absorptivity(absorptivity),
+    T(T),
     normal(normal),
-    mu(mu),
-    monteCarlo(monteCarlo),
-    specular(specular),
-    fresnel(fresnel),
-    nRefraction(nRefraction),
-    kExtinction(kExtinction),
     segmentLength(segmentLength),
-    maxEvents(maxEvents),
     powerCutoff(powerCutoff),
     rndGen(rndGen),
     absorbed(absorbed),
+    reflected(0),
     escaped(0),
-    scattered(0),
     stopped(0)
 {}
 
@@ -63,8 +50,7 @@ Foam::laserRay::laserRay
     const label celli,
     const vector& direction,
     const scalar segmentLength,
-    const scalar power,
-    const scalar opticalDepth
+    const scalar power
 )
 :
     particle(mesh, position, celli),
@@ -72,93 +58,81 @@ Foam::laserRay::laserRay
     p1_(position + segmentLength*direction),
     surfaceNormal_(Zero),
     power_(power),
-    opticalDepth_(opticalDepth),
-    nEvents_(0)
+    nEvents_(0),
+    reflectedCell_(-1)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::laserRay::fresnelAbsorptivity
+Foam::vector Foam::laserRay::surfaceNormal
 (
-    const scalar cosTheta,
-    const scalar n,
-    const scalar k
-)
+    const trackingData& td,
+    const label celli
+) const
 {
-    typedef std::complex<scalar> complexScalar;
-
-    const scalar c = min(max(cosTheta, scalar(0)), scalar(1));
-    const complexScalar N2 = complexScalar(n, k)*complexScalar(n, k);
-    const complexScalar root = std::sqrt(N2 - complexScalar(1 - c*c, 0));
-
-    const scalar rs = std::norm((c - root)/(c + root));
-    const scalar rp = std::norm((N2*c - root)/(N2*c + root));
-
-    return 1 - 0.5*(rs + rp);
+    const vector d = direction();
+    vector n = td.normal[celli];
+    if (magSqr(n) < 0.5)
+    {
+        n = surfaceNormal_;
+    }
+    if (magSqr(n) < 0.5 || (d & n) >= 0)
+    {
+        // No interface met, or one seen from behind: normal incidence
+        n = -d;
+    }
+    return n;
 }
 
 
-void Foam::laserRay::escape(trackingData& td)
+void Foam::laserRay::absorb
+(
+    trackingData& td,
+    const label celli,
+    const scalar P
+)
 {
-    td.escaped += power_;
+    td.absorbed[celli] += P;
+    power_ -= P;
+}
+
+
+void Foam::laserRay::reflectOut(trackingData& td, const scalar P)
+{
+    td.reflected += P;
+    power_ -= P;
+}
+
+
+void Foam::laserRay::reflect
+(
+    trackingData& td,
+    const label celli,
+    const vector& d
+)
+{
+    ++nEvents_;
+    reflectedCell_ = celli;
+    p0_ = position();
+    p1_ = p0_ + td.segmentLength*normalised(d);
+    stepFraction() = 0;
+}
+
+
+void Foam::laserRay::stop(trackingData& td, const bool asReflected)
+{
+    (asReflected ? td.reflected : td.stopped) += power_;
     power_ = 0;
     td.keepParticle = false;
 }
 
 
-void Foam::laserRay::interact(trackingData& td, const label celli)
+void Foam::laserRay::leave(trackingData& td)
 {
-    const vector d = normalised(p1_ - p0_);
-    vector n = td.normal[celli];
-    if (magSqr(n) < 0.5)
-    {
-        // Below the interface cells: the surface the ray came in through
-        n = surfaceNormal_;
-    }
-    if (magSqr(n) < 0.5)
-    {
-        // No interface crossed (the ray started in the metal): as if at
-        // normal incidence
-        n = -d;
-    }
-
-    const scalar a =
-        td.fresnel
-      ? fresnelAbsorptivity(mag(d & n), td.nRefraction, td.kExtinction)
-      : td.absorptivity[celli];
-
-    const scalar absorbed = a*power_;
-    td.absorbed[celli] += absorbed;
-    power_ -= absorbed;
-
-    if (power_ < td.powerCutoff || ++nEvents_ > td.maxEvents)
-    {
-        td.stopped += power_;
-        power_ = 0;
-        td.keepParticle = false;
-        return;
-    }
-
-    vector dNew;
-    if (td.specular)
-    {
-        dNew = d - 2*(d & n)*n;
-    }
-    else
-    {
-        // Uniform on the unit sphere
-        const scalar z = 2*td.rndGen.sample01<scalar>() - 1;
-        const scalar phi =
-            constant::mathematical::twoPi*td.rndGen.sample01<scalar>();
-        const scalar r = sqrt(max(1 - z*z, scalar(0)));
-        dNew = vector(r*cos(phi), r*sin(phi), z);
-    }
-
-    p0_ = position();
-    p1_ = p0_ + td.segmentLength*normalised(dNew);
-    stepFraction() = 0;
-    opticalDepth_ = -log(max(1 - td.rndGen.sample01<scalar>(), VSMALL));
+    (nEvents_ > 0 ? td.reflected : td.escaped) += power_;
+    power_ = 0;
+    td.keepParticle = false;
 }
 
 
@@ -179,61 +153,52 @@ bool Foam::laserRay::move
     while (td.keepParticle && !td.switchProcessor && stepFraction() < 1)
     {
         const label celli = cell();
+        if (celli != reflectedCell_)
+        {
+            reflectedCell_ = -1;
+        }
         if (magSqr(td.normal[celli]) > 0.5)
         {
             surfaceNormal_ = td.normal[celli];
         }
+
         const scalar f = 1 - stepFraction();
         const vector s = f*(p1_ - p0_) - deviationFromMeshCentre();
         const scalar sMag = mag(s);
-        const scalar attenuation = td.mu*max(td.alpha[celli], scalar(0));
         const point x0 = position();
 
-        if (td.monteCarlo && attenuation*sMag > opticalDepth_)
-        {
-            // The interaction lies on this segment: track up to it, or to
-            // the face if that comes first
-            const scalar frac = opticalDepth_/(attenuation*sMag);
-            trackToAndHitFace(frac*s, frac*f, cloud, td);
-            const scalar ds = mag(position() - x0);
-            opticalDepth_ = max(opticalDepth_ - attenuation*ds, scalar(0));
+        const scalar toInteraction =
+            td.model.interactionDistance(*this, td, celli);
+        const bool interacts = toInteraction < sMag;
 
-            if (td.keepParticle && !onFace())
-            {
-                interact(td, celli);
-            }
+        // Track up to the interaction, or to the face if that comes first;
+        // the stretch crossed counts before the ray passes the face (it
+        // may leave the domain there)
+        const scalar frac = interacts ? toInteraction/sMag : 1;
+        if (frac > 0)
+        {
+            trackToFace(frac*s, frac*f);
         }
-        else
+        const scalar ds = mag(position() - x0);
+        td.model.cross(*this, td, celli, ds);
+
+        if (frac > 0 && onFace())
         {
-            trackToAndHitFace(s, f, cloud, td);
-            const scalar ds = mag(position() - x0);
+            hitFace(frac*s, cloud, td);
+        }
+        else if (td.keepParticle && interacts)
+        {
+            td.model.interact(*this, td, celli);
+        }
 
-            if (td.monteCarlo)
-            {
-                opticalDepth_ -= attenuation*ds;
-            }
-            else if (power_ > 0)
-            {
-                const scalar lost = power_*(1 - exp(-attenuation*ds));
-                const scalar absorbed = td.absorptivity[celli]*lost;
-                td.absorbed[celli] += absorbed;
-                td.scattered += lost - absorbed;
-                power_ -= lost;
+        if (!interacts && ds < SMALL*td.segmentLength && ++nStuck > maxStuck)
+        {
+            stop(td, false);
+        }
 
-                if (td.keepParticle && power_ < td.powerCutoff)
-                {
-                    td.stopped += power_;
-                    power_ = 0;
-                    td.keepParticle = false;
-                }
-            }
-
-            if (ds < SMALL*td.segmentLength && ++nStuck > maxStuck)
-            {
-                td.stopped += power_;
-                power_ = 0;
-                td.keepParticle = false;
-            }
+        if (td.keepParticle && power_ < td.powerCutoff)
+        {
+            stop(td, false);
         }
     }
 
@@ -243,6 +208,8 @@ bool Foam::laserRay::move
 
 void Foam::laserRay::hitProcessorPatch(Cloud<laserRay>&, trackingData& td)
 {
+    // Cell labels are local to the processor
+    reflectedCell_ = -1;
     td.switchProcessor = true;
 }
 
@@ -254,14 +221,14 @@ bool Foam::laserRay::hitPatch(Cloud<laserRay>&, trackingData& td)
         return false;
     }
 
-    escape(td);
+    leave(td);
     return true;
 }
 
 
 void Foam::laserRay::hitWallPatch(Cloud<laserRay>&, trackingData& td)
 {
-    escape(td);
+    leave(td);
 }
 
 

@@ -30,14 +30,15 @@ Foam::laserRay::laserRay
     p1_(Zero),
     surfaceNormal_(Zero),
     power_(0),
-    opticalDepth_(0),
-    nEvents_(0)
+    nEvents_(0),
+    reflectedCell_(-1)
 {
     if (readFields)
     {
         if (is.format() == IOstream::ASCII)
         {
-            is >> p0_ >> p1_ >> surfaceNormal_ >> power_ >> opticalDepth_ >> nEvents_;
+            is >> p0_ >> p1_ >> surfaceNormal_ >> power_ >> nEvents_
+                >> reflectedCell_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
@@ -46,8 +47,8 @@ Foam::laserRay::laserRay
             readRawScalar(is, p1_.data(), vector::nComponents);
             readRawScalar(is, surfaceNormal_.data(), vector::nComponents);
             readRawScalar(is, &power_);
-            readRawScalar(is, &opticalDepth_);
             readRawLabel(is, &nEvents_);
+            readRawLabel(is, &reflectedCell_);
             is.endRawRead();
         }
         else
@@ -55,6 +56,9 @@ Foam::laserRay::laserRay
             is.read(reinterpret_cast<char*>(&p0_), sizeofFields_);
         }
     }
+
+    // Cell labels are local to the processor the ray came from
+    reflectedCell_ = -1;
 
     is.check(FUNCTION_NAME);
 }
@@ -80,8 +84,8 @@ void Foam::laserRay::writeProperties
     writeProp("p1", p1_);
     writeProp("surfaceNormal", surfaceNormal_);
     writeProp("power", power_);
-    writeProp("opticalDepth", opticalDepth_);
     writeProp("nEvents", nEvents_);
+    writeProp("reflectedCell", reflectedCell_);
 
     #undef writeProp
 }
@@ -98,8 +102,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const laserRay& p)
             << token::SPACE << p.p1_
             << token::SPACE << p.surfaceNormal_
             << token::SPACE << p.power_
-            << token::SPACE << p.opticalDepth_
-            << token::SPACE << p.nEvents_;
+            << token::SPACE << p.nEvents_
+            << token::SPACE << p.reflectedCell_;
     }
     else
     {

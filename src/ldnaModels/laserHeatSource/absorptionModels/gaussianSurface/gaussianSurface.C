@@ -1,0 +1,133 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "gaussianSurface.H"
+#include "checkedInput.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace laserAbsorptionModels
+{
+    defineTypeNameAndDebug(gaussianSurface, 0);
+    addToRunTimeSelectionTable
+    (
+        laserAbsorptionModel,
+        gaussianSurface,
+        dictionary
+    );
+}
+}
+
+
+namespace
+{
+
+// Pixels across the beam diameter: 64 over 4 beam radii resolve the
+// Gaussian on cells down to a sixteenth of the radius
+const Foam::label defaultRaysAcross = 64;
+const Foam::label maxRaysAcross = 1024;
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::laserAbsorptionModels::gaussianSurface::gaussianSurface
+(
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    laserAbsorptionModel(modelType, dict, mesh),
+    nRaysAcross_(defaultRaysAcross)
+{}
+
+
+Foam::laserAbsorptionModels::gaussianSurface::gaussianSurface
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    gaussianSurface(typeName, dict, mesh)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::laserAbsorptionModels::gaussianSurface::read
+(
+    const dictionary& dict
+)
+{
+    laserAbsorptionModel::read(dict);
+    ldna::checkKeys(coeffs_, {"nRaysAcross"});
+    nRaysAcross_ = ldna::getCheckedOrDefault<label>
+    (
+        coeffs_, "nRaysAcross", ldna::interval::closed(2, maxRaysAcross),
+        defaultRaysAcross
+    );
+}
+
+
+void Foam::laserAbsorptionModels::gaussianSurface::rays
+(
+    const laserBeam& beam,
+    const label,
+    DynamicList<vector2D>& across,
+    DynamicList<scalar>& shares
+) const
+{
+    beam.pixels(nRaysAcross_, across, shares);
+}
+
+
+Foam::scalar
+Foam::laserAbsorptionModels::gaussianSurface::interactionDistance
+(
+    const laserRay& ray,
+    const laserRay::trackingData& td,
+    const label celli
+) const
+{
+    return
+        td.alpha[celli] >= surfaceFraction && !ray.justReflected(celli)
+      ? 0
+      : GREAT;
+}
+
+
+Foam::vector Foam::laserAbsorptionModels::gaussianSurface::absorbAtSurface
+(
+    laserRay& ray,
+    laserRay::trackingData& td,
+    const label celli
+) const
+{
+    const vector n = ray.surfaceNormal(td, celli);
+    const scalar a = absorptivity(td, celli, ray.direction(), n);
+    ray.absorb(td, celli, a*ray.power());
+    return n;
+}
+
+
+void Foam::laserAbsorptionModels::gaussianSurface::interact
+(
+    laserRay& ray,
+    laserRay::trackingData& td,
+    const label celli
+) const
+{
+    absorbAtSurface(ray, td, celli);
+    ray.stop(td, true);
+}
+
+
+// ************************************************************************* //

@@ -41,6 +41,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "metalInsertion.H"
+#include "harmonic.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -12,7 +12,10 @@ case's last time (``ldna post``: metrics and pictures), and writes
 
 - ``bead.json``: the figures of ``ldna post --json`` plus ``end_time_s``,
   ``cells``, ``n_procs``, ``core_hours``, ``steady`` (bool), the area's
-  spread over the window and the mass balance error;
+  spread over the window and the mass balance error; and, as a check that
+  needs no surface height, the net metal area the process added to the
+  section (all metal in the plane minus the substrate's section) and its
+  error;
 - ``bead_area.png``: the section's bead area against time, with the
   expected area;
 - the pictures of ``ldna post`` (transverse section with the fusion line and
@@ -94,6 +97,31 @@ def plot_history(times: np.ndarray, areas: np.ndarray, expected: float, path: Pa
     return path
 
 
+def section_metal_area(case: Path, x: float) -> float:
+    """Metal area [m2] in the transverse plane at ``x``: sum of alpha times the
+    transverse area of the cells the plane cuts (the mesh's cells are
+    aligned boxes), at the case's latest time."""
+    grid = post.read_case(case)
+    points = np.asarray(grid.points, dtype=float)
+    connectivity = np.asarray(grid.cell_connectivity)
+    starts = np.asarray(grid.cell_offsets)[:-1]
+    low = np.minimum.reduceat(points[connectivity, 0], starts)
+    high = np.maximum.reduceat(points[connectivity, 0], starts)
+    cut = (low <= x) & (x < high)
+    volume = np.asarray(grid.compute_cell_sizes(length=False, area=False)["Volume"])
+    alpha = np.asarray(grid.cell_data["alpha.metal"])
+    return float(np.sum((alpha * volume / (high - low))[cut]))
+
+
+def substrate_section(case: Path) -> float:
+    """Transverse section of the substrate as meshed [m2]: depth x width."""
+    from .foamcase import dictionary_scalar
+
+    parameters = "system/caseParameters"
+    return 1e-6 * (dictionary_scalar(case, parameters, "substrateDepth")
+                   * dictionary_scalar(case, parameters, "width"))
+
+
 def bead_report(case: Path, output: Path) -> dict:
     """Write bead.json, bead_area.png and the pictures of ``case`` into ``output``."""
     case, output = Path(case), Path(output)
@@ -112,6 +140,10 @@ def bead_report(case: Path, output: Path) -> dict:
         "bead_area_spread_in_window": spread,
         "mass_balance_error": figures["bead_area_mm2"] / figures["expected_bead_area_mm2"] - 1,
     })
+    net = section_metal_area(case, 1e-3 * figures["bead_section_mm"]) - substrate_section(case)
+    figures["net_deposit_area_mm2"] = 1e6 * net
+    figures["net_mass_balance_error"] = (figures["net_deposit_area_mm2"]
+                                         / figures["expected_bead_area_mm2"] - 1)
     (output / "bead.json").write_text(json.dumps(figures, indent=2) + "\n")
     plot_history(times, areas, 1e-6 * figures["expected_bead_area_mm2"], output / "bead_area.png")
     for picture in pictures:

@@ -32,6 +32,8 @@ METAL_THRESHOLD = 0.5
 SLICE_AREA_TOLERANCE = 1e-6
 #: Picture size [pixels]
 WINDOW_SIZE = (1200, 800)
+#: Contour lines drawn this share of the domain size in front of their section
+LINE_LIFT = 1e-3
 
 
 @dataclass
@@ -297,17 +299,24 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
     section.point_data["metalT"] = metal_temperature
     fusion_line = section.contour([fusion_temperature_], scalars="metalT", preference="point")
     free_surface = section.contour([0.5], scalars="alpha.metal", preference="point")
-    if fusion_line.n_points:
-        plotter.add_mesh(fusion_line, color="cyan", line_width=4, label="fusion line")
-    if free_surface.n_points:
-        plotter.add_mesh(free_surface, color="white", line_width=3, label="free surface")
-    if fusion_line.n_points or free_surface.n_points:
-        plotter.add_legend(bcolor="grey", size=(0.2, 0.1), loc="lower left")
-    plotter.add_text(title, color="black", font_size=12)
     if normal == "x":
         plotter.view_yz()
     else:
         plotter.view_xz()
+    # The lines lie in the section's plane: lift them towards the camera,
+    # or the section hides them from one side
+    camera = plotter.camera
+    towards_camera = np.subtract(camera.position, camera.focal_point)
+    lift = LINE_LIFT * grid.length * towards_camera / np.linalg.norm(towards_camera)
+    if fusion_line.n_points:
+        plotter.add_mesh(fusion_line.translate(lift, inplace=False), color="cyan",
+                         line_width=4, label="fusion line")
+    if free_surface.n_points:
+        plotter.add_mesh(free_surface.translate(lift, inplace=False), color="white",
+                         line_width=3, label="free surface")
+    if fusion_line.n_points or free_surface.n_points:
+        plotter.add_legend(bcolor="grey", size=(0.2, 0.1), loc="lower left")
+    plotter.add_text(title, color="black", font_size=12)
     plotter.screenshot(str(path))
     plotter.close()
     return path

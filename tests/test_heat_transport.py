@@ -65,6 +65,8 @@ def eagar_tsai(x: float, y: float, z: float) -> float:
 @pytest.fixture
 def moving_source_case(tmp_path: Path) -> Path:
     case = prepare_test_case("movingSource", tmp_path, material_from_template=False)
+    # The bounded second-order scheme under test (the template keeps upwind)
+    set_entry(case / "system" / "fvSchemes", "div(rhoPhi,h)", "Gauss vanLeer")
     run(case, "blockMesh")
     return case
 

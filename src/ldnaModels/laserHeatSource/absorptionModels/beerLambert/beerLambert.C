@@ -105,7 +105,7 @@ void Foam::laserAbsorptionModels::beerLambert::cross
 ) const
 {
     const scalar opticalDepth = mu_*max(td.alpha[celli], scalar(0))*ds;
-    if (opticalDepth <= 0 || ray.power() <= 0)
+    if (!(opticalDepth > 0) || !(ray.power() > 0))
     {
         return;
     }

@@ -59,9 +59,8 @@ EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosi
 
 #: Measured, not yet understood: strict, so that a fix shows
 DROPLETS_DIFFER = (
-    "with inserted droplets the serial and parallel runs differ by 3.6e-4 in the metal "
-    "fraction and 1.3e-4 of its scale in the metal's velocity at 15 ms (the droplets in "
-    "flight); 1e-10 without droplets")
+    "with inserted droplets the serial and parallel runs differ by up to 3.4e-2 in a "
+    "cell's metal fraction at 15 ms (the droplets in flight); 1e-10 without droplets")
 
 
 @pytest.mark.parametrize("with_droplets", [

@@ -146,11 +146,7 @@ def run_scene(case: Path, hard_case: HardCase) -> None:
 
 #: Known failures, with what was measured (strict: a fix makes them fail
 #: until the entry is removed)
-KNOWN_FAILURES = {
-    "irregular_start_8x_droplets":
-        "alpha undershoots to -1.4e-6 (bound -1e-6) 2.9 ms after the first 8x droplet is "
-        "inserted, in flight; -1.02e-6 with 40 limiter iterations instead of 20",
-}
+KNOWN_FAILURES: dict[str, str] = {}
 
 
 @pytest.mark.parametrize("hard_case", [

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -77,12 +78,70 @@ def _bead_report(args: argparse.Namespace) -> int:
 
 
 def _float_list(text: str) -> list[float]:
-    return [float(value) for value in text.split(",")]
+    try:
+        values = [float(value) for value in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a comma-separated list of numbers")
+    if not all(value == value and abs(value) != float("inf") for value in values):
+        raise argparse.ArgumentTypeError(f"'{text}' holds a value that is not finite")
+    return values
+
+
+def _case(text: str) -> str:
+    """An OpenFOAM case directory: one with system/controlDict."""
+    if not (Path(text) / "system" / "controlDict").is_file():
+        raise argparse.ArgumentTypeError(f"'{text}' is not an OpenFOAM case "
+                                         "(no system/controlDict)")
+    return text
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} must be at least 1")
+    return value
+
+
+def _level(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
+    if not 0 <= value <= 3:
+        raise argparse.ArgumentTypeError(f"level {value} must lie in 0..3")
+    return value
+
+
+def _positive_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number")
+    if not (0 < value < float("inf")):
+        raise argparse.ArgumentTypeError(f"{text} must be a positive, finite number")
+    return value
+
+
+def _finite_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number")
+    if not (abs(value) < float("inf")):
+        raise argparse.ArgumentTypeError(f"{text} must be a finite number")
+    return value
 
 
 def _post(args: argparse.Namespace) -> int:
     from . import post
 
+    case = Path(args.case)
+    if not (case / "constant" / "polyMesh" / "faces").exists() and not any(
+            (p / "constant" / "polyMesh").exists() for p in case.glob("processor*")):
+        raise FileNotFoundError(f"{case} has no mesh: run its Allrun (or blockMesh) first")
     result, pictures, time = post.post_process(Path(args.case), args.output, args.time,
                                                surface_height=args.surface_height,
                                                bead_section=args.bead_section,
@@ -105,15 +164,15 @@ def build_parser() -> argparse.ArgumentParser:
         "mesh-levels",
         help="write system/meshLevels/level0..3 of an LDNA case from its caseParameters",
     )
-    mesh_levels.add_argument("case", nargs="?", default=".", help="case directory")
+    mesh_levels.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
     mesh_levels.set_defaults(func=_mesh_levels)
 
     bench_laser = commands.add_parser(
         "bench-laser",
         help="time per step of the LDNA template without a laser and with each laser model",
     )
-    bench_laser.add_argument("--level", type=int, default=1, help="mesh level (0..3)")
-    bench_laser.add_argument("--steps", type=int, default=20, help="fixed time steps per run")
+    bench_laser.add_argument("--level", type=_level, default=1, help="mesh level (0..3)")
+    bench_laser.add_argument("--steps", type=_positive_int, default=20, help="fixed time steps per run")
     bench_laser.set_defaults(func=_bench_laser)
 
     bench = commands.add_parser(
@@ -122,10 +181,10 @@ def build_parser() -> argparse.ArgumentParser:
              "effect against none, throughput and projected core-hours at the paper's "
              "resolution, parallel efficiency",
     )
-    bench.add_argument("--level", type=int, default=0, help="mesh level (0..3)")
-    bench.add_argument("--steps", type=int, default=40, help="fixed time steps per run")
-    bench.add_argument("--np", type=int, default=2, help="MPI ranks of the parallel run")
-    bench.add_argument("--repeats", type=int, default=3,
+    bench.add_argument("--level", type=_level, default=0, help="mesh level (0..3)")
+    bench.add_argument("--steps", type=_positive_int, default=40, help="fixed time steps per run")
+    bench.add_argument("--np", type=_positive_int, default=2, help="MPI ranks of the parallel run")
+    bench.add_argument("--repeats", type=_positive_int, default=3,
                        help="runs of each variant; the least time per step counts")
     bench.set_defaults(func=_bench)
 
@@ -134,8 +193,8 @@ def build_parser() -> argparse.ArgumentParser:
         help="mesh an LDNA case with gmsh (hexahedra, refined band at the surface) "
              "and gmshToFoam instead of blockMesh",
     )
-    gmsh.add_argument("case", nargs="?", default=".", help="case directory")
-    gmsh.add_argument("--level", type=int, help="resolution level 0..3 [caseParameters]")
+    gmsh.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
+    gmsh.add_argument("--level", type=_level, help="resolution level 0..3 [caseParameters]")
     gmsh.set_defaults(func=_gmsh_mesh)
 
     study = commands.add_parser(
@@ -144,14 +203,14 @@ def build_parser() -> argparse.ArgumentParser:
         description="Copy TEMPLATE into STUDY_DIR once per member of the grid of --set "
                     "values, run each member's Allrun, collect STUDY_DIR/results.csv.",
     )
-    study.add_argument("template", help="case template, e.g. cases/ldna")
+    study.add_argument("template", type=_case, help="case template, e.g. cases/ldna")
     study.add_argument("study_dir", help="folder of the study (members and results.csv)")
     study.add_argument("--set", action="append", required=True, metavar="NAME=V1,V2,...",
                        help="a grid axis: a caseParameters entry (laserPower, weldingSpeed, "
                             "wireFeedSpeed, oscillationAmplitude, level, ...) or FILE:ENTRY "
                             "(e.g. constant/fvOptions:laser/absorptionModel); repeat for more")
-    study.add_argument("--end-time", type=float, help="simulated time of every member [s]")
-    study.add_argument("--np", type=int, default=1, help="MPI ranks per member (1: serial)")
+    study.add_argument("--end-time", type=_positive_float, help="simulated time of every member [s]")
+    study.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per member (1: serial)")
     study.set_defaults(func=_study)
 
     accuracy = commands.add_parser(
@@ -162,7 +221,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "compare the key outputs with the analytical answer (stefanMelting) or "
                     "the finest run (LDNA scene), and write OUTPUT/accuracy.{csv,md,png}.",
     )
-    accuracy.add_argument("case", help="case template: cases/ldna or cases/stefanMelting")
+    accuracy.add_argument("case", type=_case, help="case template: cases/ldna or cases/stefanMelting")
     accuracy.add_argument("output", help="folder of the study")
     accuracy.add_argument("--scene", choices=("auto", "ldna", "stefan"), default="auto",
                           help="kind of scene [from the case's caseParameters]")
@@ -172,13 +231,13 @@ def build_parser() -> argparse.ArgumentParser:
                                "and time steps of 16 ms/2^level [0,1,2,3,4]")
     accuracy.add_argument("--max-co", type=_float_list, metavar="C1,C2,...",
                           help="also vary maxCo and maxAlphaCo (adjustable time step)")
-    accuracy.add_argument("--end-time", type=float, help="simulated time of every run [s]")
+    accuracy.add_argument("--end-time", type=_positive_float, help="simulated time of every run [s]")
     accuracy.add_argument("--start-from", metavar="RUN",
                           help="start every run from a developed state of this finished run "
                                "(mapped onto each level's mesh; with --start-time)")
-    accuracy.add_argument("--start-time", type=float, metavar="T",
+    accuracy.add_argument("--start-time", type=_finite_float, metavar="T",
                           help="the reconstructed time of --start-from to start at [s]")
-    accuracy.add_argument("--np", type=int, default=1, help="MPI ranks per run (1: serial)")
+    accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
     accuracy.set_defaults(func=_accuracy)
 
     post = commands.add_parser(
@@ -186,22 +245,22 @@ def build_parser() -> argparse.ArgumentParser:
         help="bead metrics and PNG pictures (free surface, transverse and longitudinal "
              "sections) of a case",
     )
-    post.add_argument("case", nargs="?", default=".", help="case directory")
+    post.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
     post.add_argument("--output", help="folder of the pictures [CASE/pictures]")
-    post.add_argument("--time", type=float, help="time to read [latest]")
-    post.add_argument("--surface-height", type=float, default=0.0,
+    post.add_argument("--time", type=_finite_float, help="time to read [latest]")
+    post.add_argument("--surface-height", type=_finite_float, default=0.0,
                       help="height of the substrate surface [m]")
-    post.add_argument("--bead-section", type=float,
+    post.add_argument("--bead-section", type=_finite_float,
                       help="position along the weld of the bead section [m] "
                            "[slice of largest bead area]")
-    post.add_argument("--fusion-temperature", type=float,
+    post.add_argument("--fusion-temperature", type=_positive_float,
                       help="isotherm of the fusion line [K] [(solidus+liquidus)/2]")
     report = commands.add_parser(
         "bead-report",
         help="validation report of a long run: bead.json (figures, steadiness, mass "
              "balance, cost), bead area against time and the pictures",
     )
-    report.add_argument("case", help="case directory")
+    report.add_argument("case", type=_case, help="case directory")
     report.add_argument("output", help="folder of the report")
     report.set_defaults(func=_bead_report)
 
@@ -212,10 +271,23 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: Errors of the user's input or of a run, told in one line; anything else is
+#: a bug and shows its traceback.  LDNA_DEBUG=1 shows the traceback of all.
+USER_ERRORS = (OSError, ValueError, RuntimeError, KeyError)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the ``ldna`` command line."""
     args = build_parser().parse_args(argv)
-    return int(args.func(args))
+    try:
+        return int(args.func(args))
+    except USER_ERRORS as error:
+        if os.environ.get("LDNA_DEBUG"):
+            raise
+        message = str(error).strip().splitlines()
+        print(f"ldna {args.command}: error: {message[0] if message else type(error).__name__}",
+              file=sys.stderr)
+        return 1
 
 
 if __name__ == "__main__":

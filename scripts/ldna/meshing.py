@@ -82,11 +82,20 @@ def droplet_radius(parameters: dict[str, float]) -> float:
     return 1e3 * (3 * volume / (4 * math.pi)) ** (1 / 3)
 
 
+def check_domain(parameters: dict[str, float]) -> None:
+    """The domain's extents must be positive and finite (a mesh needs them)."""
+    for entry in ("length", "width", "substrateDepth", "claddingHeight"):
+        if not 0 < parameters[entry] < 1e4:
+            raise ValueError(f"caseParameters: {entry} must be in (0, 1e4) mm, "
+                             f"not {parameters[entry]}")
+
+
 def check_process_zone(parameters: dict[str, float]) -> None:
     """The process zone must enclose the wire tips, the droplets' flight and the laser.
 
     Raises ``ValueError`` naming the entry and the bound it misses.
     """
+    check_domain(parameters)
     p = parameters
     centre_x = p["processPosition"]
     wires_x = (centre_x - 0.5 * p["wireSpacing"], centre_x + 0.5 * p["wireSpacing"])
@@ -127,10 +136,7 @@ def check_process_zone(parameters: dict[str, float]) -> None:
 
 def mesh_counts(parameters: dict[str, float], level: float) -> MeshCounts:
     """Cell counts for the geometry in ``caseParameters`` at ``level``."""
-    for entry in ("length", "width", "substrateDepth", "claddingHeight"):
-        if not 0 < parameters[entry] < 1e4:
-            raise ValueError(f"caseParameters: {entry} must be in (0, 1e4) mm, "
-                             f"not {parameters[entry]}")
+    check_domain(parameters)
     base = base_cell_size(level)
     return MeshCounts(
         nx=max(1, round(parameters["length"] / base)),

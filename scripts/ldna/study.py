@@ -72,6 +72,7 @@ class Member:
     values: dict[str, str]
     path: Path
     status: str = "pending"
+    error: str = ""
     wall_time: float = 0.0
     metrics: dict[str, float] = field(default_factory=dict)
 
@@ -155,6 +156,9 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
     log_text = solver_log.read_text(errors="replace") if solver_log.exists() else ""
     finished = "\nEnd\n" in log_text or "Finalising parallel run" in log_text
     member.status = "done" if process.returncode == 0 and finished else "failed"
+    if member.status == "failed":
+        member.error = failure_line(log_text or (member.path / "log.Allrun").read_text(
+            errors="replace"))
     if member.status == "done":
         row = read_function_object_metrics(member.path)[-1]
         member.metrics = {"time": float(row[0]),
@@ -162,16 +166,27 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
     _progress(index + 1, total, label, started)
 
 
+def failure_line(log_text: str) -> str:
+    """The line that says why a run stopped: the first of its FOAM FATAL error's
+    message, else its last non-empty line."""
+    lines = [line.strip() for line in log_text.splitlines() if line.strip()]
+    for i, line in enumerate(lines):
+        if line.startswith("--> FOAM FATAL") and i + 1 < len(lines):
+            return lines[i + 1]
+    return lines[-1] if lines else "no output"
+
+
 def write_csv(members: list[Member], path: Path) -> Path:
-    """One row per member: name, parameter values, status, wall time, metrics."""
+    """One row per member: name, parameter values, status, error, wall time, metrics."""
     parameter_names = list(members[0].values) if members else []
     metric_names = ["time", *BeadMetrics.FUNCTION_OBJECT_COLUMNS]
     with open(path, "w", newline="", encoding="utf-8") as stream:
         writer = csv.writer(stream)
-        writer.writerow(["member", *parameter_names, "status", "wall_time_s", *metric_names])
+        writer.writerow(["member", *parameter_names, "status", "error", "wall_time_s",
+                         *metric_names])
         for member in members:
             writer.writerow([member.name, *(member.values[n] for n in parameter_names),
-                             member.status, f"{member.wall_time:.2f}",
+                             member.status, member.error, f"{member.wall_time:.2f}",
                              *(f"{member.metrics[m]:.9g}" if m in member.metrics else ""
                                for m in metric_names)])
     return path

@@ -42,6 +42,7 @@ Description
 #include "fvOptions.H"
 #include "metalInsertion.H"
 #include "harmonic.H"
+#include "checkedInput.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -77,6 +78,7 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readTimeControls.H"
+        #include "checkControls.H"
         #include "CourantNo.H"
         #include "alphaCourantNo.H"
         #include "setDeltaT.H"

@@ -5,6 +5,7 @@
 #include "meltPoolMetrics.H"
 #include "volFields.H"
 #include "IOdictionary.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -47,29 +48,26 @@ Foam::IOdictionary readThermophysicalProperties(const Foam::fvMesh& mesh)
 }
 
 
-//- A unit direction from the dictionary; zero length is an input error
-Foam::vector readUnitDirection
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::vector& deflt
-)
-{
-    const Foam::vector dir = dict.lookupOrDefault<Foam::vector>(key, deflt);
-    if (Foam::mag(dir) < Foam::VSMALL)
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << dir << " has no direction: give a non-zero vector"
-            << Foam::exit(Foam::FatalIOError);
-    }
-    return dir/Foam::mag(dir);
-}
-
 } // End anonymous namespace
 
 
 void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
 {
+    // Its own entries and those of every function object (functionObject,
+    // timeControl, writeFile)
+    ldna::checkKeys
+    (
+        dict,
+        {
+            "type", "libs", "region", "enabled", "log", "timeStart",
+            "timeEnd", "executeControl", "executeInterval", "writeControl",
+            "writeInterval", "writePrecision", "writeToFile", "useUserTime",
+            "T", "alpha", "surfaceHeight", "weldingDirection",
+            "verticalDirection", "fusionTemperature", "metalThreshold",
+            "beadSection"
+        }
+    );
+
     TName_ = dict.lookupOrDefault<word>("T", "T");
 
     // Metal phase and fusion isotherm default to the case's material
@@ -79,10 +77,16 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
 
     alphaName_ = dict.lookupOrDefault<word>("alpha", "alpha." + metal);
 
-    surfaceHeight_ = dict.lookupOrDefault<scalar>("surfaceHeight", 0);
+    surfaceHeight_ = ldna::getCheckedOrDefault<scalar>
+    (
+        dict, "surfaceHeight",
+        ldna::interval::open(-ldna::limits::length, ldna::limits::length), 0
+    );
 
-    weldDir_ = readUnitDirection(dict, "weldingDirection", vector(1, 0, 0));
-    verticalDir_ = readUnitDirection(dict, "verticalDirection", vector(0, 0, 1));
+    const vector weld(1, 0, 0);
+    const vector vertical(0, 0, 1);
+    weldDir_ = ldna::getDirection(dict, "weldingDirection", &weld);
+    verticalDir_ = ldna::getDirection(dict, "verticalDirection", &vertical);
 
     // Tolerance of the right angle between the two directions
     const scalar orthogonalityTolerance = 1e-6;
@@ -97,28 +101,26 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
     }
     transverseDir_ = verticalDir_ ^ weldDir_;
 
-    fusionTemperature_ = dict.lookupOrDefault<scalar>
+    fusionTemperature_ = ldna::getCheckedOrDefault<scalar>
     (
-        "fusionTemperature",
+        dict, "fusionTemperature",
+        ldna::interval::open(0, ldna::limits::temperature),
         0.5*(metalDict.get<scalar>("solidus") + metalDict.get<scalar>("liquidus"))
     );
+    metalThreshold_ = ldna::getCheckedOrDefault<scalar>
+    (
+        dict, "metalThreshold", ldna::interval::open(0, 1), 0.5
+    );
 
-    if (fusionTemperature_ <= 0)
+    fixedBeadSection_ = dict.found("beadSection");
+    if (fixedBeadSection_)
     {
-        FatalIOErrorInFunction(dict)
-            << "fusionTemperature " << fusionTemperature_
-            << " K: must be > 0" << exit(FatalIOError);
+        beadSection_ = ldna::getChecked<scalar>
+        (
+            dict, "beadSection",
+            ldna::interval::open(-ldna::limits::length, ldna::limits::length)
+        );
     }
-
-    metalThreshold_ = dict.lookupOrDefault<scalar>("metalThreshold", 0.5);
-    if (metalThreshold_ <= 0 || metalThreshold_ >= 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "metalThreshold " << metalThreshold_
-            << ": must lie in (0, 1)" << exit(FatalIOError);
-    }
-
-    fixedBeadSection_ = dict.readIfPresent("beadSection", beadSection_);
 }
 
 
@@ -357,6 +359,18 @@ bool Foam::functionObjects::meltPoolMetrics::read(const dictionary& dict)
     writeFile::read(dict);
     readCoeffs(dict);
     calcCellBounds();
+
+    // A section off the mesh would measure its first or last slice
+    const scalar sliceEnd = sliceOrigin_ + nSlices_*sliceLength_;
+    if (fixedBeadSection_)
+    {
+        ldna::checkValue
+        (
+            dict, "beadSection", beadSection_,
+            ldna::interval::closed(sliceOrigin_, sliceEnd),
+            "a position along weldingDirection on the mesh"
+        );
+    }
 
     return true;
 }

@@ -38,6 +38,29 @@ void Foam::ldna::checkValue
 }
 
 
+Foam::vector Foam::ldna::getDirection
+(
+    const dictionary& dict,
+    const word& key,
+    const vector* deflt
+)
+{
+    const vector v =
+        (deflt && !dict.found(key)) ? *deflt : dict.get<vector>(key);
+
+    // Components up to this size keep |v|^2 finite
+    const scalar largestComponent = 1e100;
+    checkValue
+    (
+        dict, key, cmptMax(cmptMag(v)),
+        interval::open(VSMALL, largestComponent),
+        "the largest magnitude of its components: a finite, non-zero"
+        " direction"
+    );
+    return v/mag(v);
+}
+
+
 Foam::label Foam::ldna::editDistance(const word& a, const word& b)
 {
     labelList previous(b.size() + 1);

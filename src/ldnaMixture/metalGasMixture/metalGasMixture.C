@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "metalGasMixture.H"
+#include "checkedInput.H"
 #include "interfaceDelta.H"
 #include "fvc.H"
 
@@ -32,6 +33,7 @@ bool Foam::metalGasMixture::readBoussinesq
     const word& defaultModel,
     const word& referenceName,
     const word& referenceUnit,
+    const scalar referenceMax,
     scalar& reference
 ) const
 {
@@ -49,14 +51,10 @@ bool Foam::metalGasMixture::readBoussinesq
     Info<< "    " << phaseDict.dictName() << " density: " << model;
     if (model == "Boussinesq")
     {
-        reference = phaseDict.get<scalar>(referenceName);
-        if (!(reference > 0))
-        {
-            FatalIOErrorInFunction(phaseDict)
-                << "Entry '" << referenceName << "' must be > 0 "
-                << referenceUnit << ", not " << reference
-                << exit(FatalIOError);
-        }
+        reference = ldna::getChecked<scalar>
+        (
+            phaseDict, referenceName, ldna::interval::open(0, referenceMax)
+        );
         Info<< ", " << referenceName << " " << reference << " "
             << referenceUnit << " for mass and inertia";
     }
@@ -67,12 +65,13 @@ bool Foam::metalGasMixture::readBoussinesq
 
 
 Foam::autoPtr<Foam::Function1<Foam::scalar>>
-Foam::metalGasMixture::readPositiveFunction
+Foam::metalGasMixture::readFunction
 (
     const dictionary& dict,
     const word& entryName,
     const scalar T0,
-    const scalar T1
+    const scalar T1,
+    const scalar maxValue
 ) const
 {
     autoPtr<Function1<scalar>> f(Function1<scalar>::New(entryName, dict));
@@ -83,15 +82,13 @@ Foam::metalGasMixture::readPositiveFunction
     for (label i = 0; i <= nSamples; ++i)
     {
         const scalar T = T0 + (T1 - T0)*i/nSamples;
-        const scalar value = f->value(T);
-        if (!(value > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry '" << entryName << "' in " << dict.name()
-                << " must be positive for T in [" << T0 << ", " << T1
-                << "] K, but is " << value << " at T = " << T << " K"
-                << exit(FatalIOError);
-        }
+        ldna::checkValue
+        (
+            dict, entryName, f->value(T),
+            ldna::interval::open(0, maxValue),
+            "at T = " + Foam::name(T) + " K of [" + Foam::name(T0) + ", "
+          + Foam::name(T1) + "] K"
+        );
     }
 
     return f;
@@ -100,92 +97,116 @@ Foam::metalGasMixture::readPositiveFunction
 
 void Foam::metalGasMixture::readCoeffs()
 {
-    pMin_ = dimensionedScalar("pMin", dimPressure, *this);
-    if (pMin_.value() <= 0)
-    {
-        FatalIOErrorInFunction(*this)
-            << "Entry 'pMin' must be > 0 Pa, not " << pMin_.value()
-            << exit(FatalIOError);
-    }
+    using ldna::interval;
+    namespace limits = ldna::limits;
 
-    curvatureSmoothing_ = lookupOrDefault<label>("curvatureSmoothing", 2);
-    if (curvatureSmoothing_ < 0)
-    {
-        FatalIOErrorInFunction(*this)
-            << "Entry 'curvatureSmoothing' must be >= 0, not "
-            << curvatureSmoothing_ << exit(FatalIOError);
-    }
+    ldna::checkKeys
+    (
+        *this,
+        {"phases", "pMin", "curvatureSmoothing", "sigma", "metal", "gas"}
+    );
+
+    pMin_ = dimensionedScalar
+    (
+        "pMin", dimPressure,
+        ldna::getChecked<scalar>
+        (
+            *this, "pMin", interval::openClosed(0, limits::pressure)
+        )
+    );
+
+    // More passes smooth the curvature over more than the interface's
+    // neighbourhood
+    const label maxCurvatureSmoothing = 100;
+    curvatureSmoothing_ = ldna::getCheckedOrDefault<label>
+    (
+        *this, "curvatureSmoothing",
+        interval::closed(0, maxCurvatureSmoothing), 2
+    );
 
     const dictionary& metal = subDict(phase1Name());
+    ldna::checkKeys
+    (
+        metal,
+        {
+            "densityModel", "referenceDensity", "solidus", "liquidus",
+            "latentHeat", "rho", "Cp", "kappa", "mu"
+        }
+    );
 
     Boussinesq_ = readBoussinesq
     (
         metal, "variable", "Boussinesq", "referenceDensity", "kg/m3",
-        referenceDensity_
+        limits::density, referenceDensity_
     );
 
-    Tsolidus_ = metal.get<scalar>("solidus");
+    Tsolidus_ = ldna::getChecked<scalar>
+    (
+        metal, "solidus", interval::open(0, limits::temperature)
+    );
     Tliquidus_ = metal.get<scalar>("liquidus");
-    latentHeat_ = metal.get<scalar>("latentHeat");
-
-    if (Tsolidus_ <= 0)
-    {
-        FatalIOErrorInFunction(metal)
-            << "Entry 'solidus' must be > 0 K, not " << Tsolidus_
-            << exit(FatalIOError);
-    }
-    if (Tliquidus_ <= Tsolidus_)
-    {
-        FatalIOErrorInFunction(metal)
-            << "Entry 'liquidus' (" << Tliquidus_ << " K) must be above"
-            << " 'solidus' (" << Tsolidus_ << " K): the latent heat is"
-            << " released over the mushy range (solidus, liquidus)"
-            << exit(FatalIOError);
-    }
-    if (latentHeat_ < 0)
-    {
-        FatalIOErrorInFunction(metal)
-            << "Entry 'latentHeat' must be >= 0 J/kg, not " << latentHeat_
-            << exit(FatalIOError);
-    }
+    ldna::checkValue
+    (
+        metal, "liquidus", Tliquidus_,
+        interval::open(Tsolidus_, limits::temperature),
+        "above the solidus: the latent heat is released over the mushy range"
+    );
+    latentHeat_ = ldna::getChecked<scalar>
+    (
+        metal, "latentHeat", interval::closed(0, limits::latentHeat)
+    );
 
     const scalar Ts = Tsolidus_;
     const scalar Tl = Tliquidus_;
     const scalar Tmin = propertyCheckTmin;
     const scalar Tmax = propertyCheckTmax;
 
-    const dictionary& rhoDict = metal.subDict("rho");
-    rhoSolid_ = readPositiveFunction(rhoDict, "solid", Tmin, Ts);
-    rhoLiquid_ = readPositiveFunction(rhoDict, "liquid", Tl, Tmax);
+    // Solid and liquid property functions, each on its range of use
+    auto readPhases = [&](const word& property, const scalar maxValue)
+    {
+        const dictionary& dict = metal.subDict(property);
+        ldna::checkKeys(dict, {"solid", "liquid"});
+        return std::make_pair
+        (
+            readFunction(dict, "solid", Tmin, Ts, maxValue),
+            readFunction(dict, "liquid", Tl, Tmax, maxValue)
+        );
+    };
 
-    const dictionary& CpDict = metal.subDict("Cp");
-    CpSolid_ = readPositiveFunction(CpDict, "solid", Tmin, Ts);
-    CpLiquid_ = readPositiveFunction(CpDict, "liquid", Tl, Tmax);
+    auto rho = readPhases("rho", limits::density);
+    rhoSolid_ = std::move(rho.first);
+    rhoLiquid_ = std::move(rho.second);
 
-    const dictionary& kappaDict = metal.subDict("kappa");
-    kappaSolid_ = readPositiveFunction(kappaDict, "solid", Tmin, Ts);
-    kappaLiquid_ = readPositiveFunction(kappaDict, "liquid", Tl, Tmax);
+    auto Cp = readPhases("Cp", limits::specificHeat);
+    CpSolid_ = std::move(Cp.first);
+    CpLiquid_ = std::move(Cp.second);
 
-    muLiquid_ = readPositiveFunction(metal, "mu", Tl, Tmax);
+    auto kappa = readPhases("kappa", limits::conductivity);
+    kappaSolid_ = std::move(kappa.first);
+    kappaLiquid_ = std::move(kappa.second);
+
+    muLiquid_ = readFunction(metal, "mu", Tl, Tmax, limits::viscosity);
 
     const dictionary& gas = subDict(phase2Name());
+    ldna::checkKeys
+    (
+        gas,
+        {"R", "densityModel", "referenceTemperature", "Cp", "kappa", "mu"}
+    );
 
-    Rgas_ = gas.get<scalar>("R");
-    if (Rgas_ <= 0)
-    {
-        FatalIOErrorInFunction(gas)
-            << "Entry 'R' (specific gas constant) must be > 0 J/kg/K, not "
-            << Rgas_ << exit(FatalIOError);
-    }
+    Rgas_ = ldna::getChecked<scalar>
+    (
+        gas, "R", interval::open(0, limits::gasConstant)
+    );
     gasBoussinesq_ = readBoussinesq
     (
         gas, "idealGas", "idealGas", "referenceTemperature", "K",
-        gasReferenceTemperature_
+        limits::temperature, gasReferenceTemperature_
     );
 
-    CpGas_ = readPositiveFunction(gas, "Cp", Tmin, Tmax);
-    kappaGas_ = readPositiveFunction(gas, "kappa", Tmin, Tmax);
-    muGas_ = readPositiveFunction(gas, "mu", Tmin, Tmax);
+    CpGas_ = readFunction(gas, "Cp", Tmin, Tmax, limits::specificHeat);
+    kappaGas_ = readFunction(gas, "kappa", Tmin, Tmax, limits::conductivity);
+    muGas_ = readFunction(gas, "mu", Tmin, Tmax, limits::viscosity);
 }
 
 

@@ -10,6 +10,7 @@
 #include "boundBox.H"
 #include "unitConversion.H"
 #include "isoCutCell.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 using Foam::constant::mathematical::pi;
@@ -27,89 +28,80 @@ namespace fv
 }
 
 
-namespace
-{
-
-// Read a scalar entry and stop with the entry, the value and the allowed
-// range when it lies outside (low, high) (ends open or closed)
-Foam::scalar getInRange
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::scalar low,
-    const bool lowClosed,
-    const Foam::scalar high,
-    const bool highClosed,
-    const Foam::scalar* deflt = nullptr
-)
-{
-    using namespace Foam;
-
-    const scalar value =
-        (deflt && !dict.found(key)) ? *deflt : dict.get<scalar>(key);
-
-    const bool aboveLow = lowClosed ? value >= low : value > low;
-    const bool belowHigh = highClosed ? value <= high : value < high;
-
-    if (!(aboveLow && belowHigh))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' must be in "
-            << (lowClosed ? "[" : "(") << low << ", " << high
-            << (highClosed ? "]" : ")") << ", not " << value
-            << exit(FatalIOError);
-    }
-    return value;
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::fv::dropletSource::readCoeffs()
 {
-    const scalar inf = GREAT;
+    using ldna::interval;
+    namespace limits = ldna::limits;
 
-    speed_ = getInRange(coeffs_, "speed", 0, true, inf, false);
-    parallelityFrequency_ =
-        getInRange(coeffs_, "parallelityFrequency", 0, false, inf, false);
+    ldna::checkKeys
+    (
+        coeffs_,
+        {
+            "type", "active", "mode", "wireDensity", "position",
+            "wireSpacing", "speed", "transverseAngle", "parallelityFrequency",
+            "maxLongitudinalAngle", "switchPhase", "switchThreshold",
+            "irregularityTime", "irregularDiameterFactor",
+            "irregularSpacingIncrease", "wires", "alpha", "U", "T", "log"
+        }
+    );
 
-    const scalar zero = 0;
-    transverseAngle_ =
-        getInRange(coeffs_, "transverseAngle", -90, false, 90, false, &zero);
+    speed_ = ldna::getChecked<scalar>
+    (
+        coeffs_, "speed", interval::closedOpen(0, limits::speed)
+    );
+    parallelityFrequency_ = ldna::getChecked<scalar>
+    (
+        coeffs_, "parallelityFrequency",
+        interval::openClosed(0, limits::frequency)
+    );
+    transverseAngle_ = ldna::getCheckedOrDefault<scalar>
+    (
+        coeffs_, "transverseAngle", interval::open(-90, 90), 0
+    );
 
     // eq. 33: alpha between 0 and 10 degrees
     const scalar alphaMax = 10;
-    maxLongitudinalAngle_ = getInRange
+    maxLongitudinalAngle_ = ldna::getCheckedOrDefault<scalar>
     (
-        coeffs_, "maxLongitudinalAngle", 0, true, 90, false, &alphaMax
+        coeffs_, "maxLongitudinalAngle", interval::closedOpen(0, 90), alphaMax
     );
 
     // eq. 18: on while sin(2 pi nu t + arcsin 0.9) > 0.8
     const scalar phase = radToDeg(asin(0.9));
     switchPhase_ = degToRad
     (
-        getInRange(coeffs_, "switchPhase", -inf, false, inf, false, &phase)
+        ldna::getCheckedOrDefault<scalar>
+        (
+            coeffs_, "switchPhase", interval::closed(-360, 360), phase
+        )
     );
     const scalar threshold = 0.8;
-    switchThreshold_ =
-        getInRange(coeffs_, "switchThreshold", -1, false, 1, false, &threshold);
-
-    irregularityTime_ =
-        getInRange(coeffs_, "irregularityTime", 0, true, inf, false, &zero);
-    const scalar diameterFactor = 2;
-    irregularDiameterFactor_ = getInRange
+    switchThreshold_ = ldna::getCheckedOrDefault<scalar>
     (
-        coeffs_, "irregularDiameterFactor", 0, false, inf, false,
-        &diameterFactor
+        coeffs_, "switchThreshold", interval::open(-1, 1), threshold
+    );
+
+    irregularityTime_ = ldna::getCheckedOrDefault<scalar>
+    (
+        coeffs_, "irregularityTime", interval::closedOpen(0, GREAT), 0
+    );
+    // A droplet of up to ten times the regular diameter, 1 000 times the
+    // mass: beyond that it is no droplet of the wire
+    const scalar maxDiameterFactor = 10;
+    const scalar diameterFactor = 2;
+    irregularDiameterFactor_ = ldna::getCheckedOrDefault<scalar>
+    (
+        coeffs_, "irregularDiameterFactor",
+        interval::openClosed(0, maxDiameterFactor), diameterFactor
     );
     // The paper adds 0.5 in the units of d_d, which its figures give in mm
     const scalar spacingIncrease = 0.5e-3;
-    irregularSpacingIncrease_ = getInRange
+    irregularSpacingIncrease_ = ldna::getCheckedOrDefault<scalar>
     (
-        coeffs_, "irregularSpacingIncrease", 0, true, inf, false,
-        &spacingIncrease
+        coeffs_, "irregularSpacingIncrease",
+        interval::closedOpen(0, limits::length), spacingIncrease
     );
 
     const word mode = coeffs_.lookupOrDefault<word>("mode", "gaussian");
@@ -140,11 +132,15 @@ void Foam::fv::dropletSource::readCoeffs()
     }
     applied_.setSize(fieldNames_.size(), false);
 
-    const scalar wireDensity =
-        getInRange(coeffs_, "wireDensity", 0, false, inf, false);
+    const scalar wireDensity = ldna::getChecked<scalar>
+    (
+        coeffs_, "wireDensity", interval::openClosed(0, limits::density)
+    );
     const vector position0 = coeffs_.get<vector>("position");
-    const scalar wireSpacing =
-        getInRange(coeffs_, "wireSpacing", 0, true, inf, false);
+    const scalar wireSpacing = ldna::getChecked<scalar>
+    (
+        coeffs_, "wireSpacing", interval::closedOpen(0, limits::length)
+    );
     const vector spacingDirection(1, 0, 0);
 
     const metalGasMixture& mixture =
@@ -178,11 +174,27 @@ void Foam::fv::dropletSource::readCoeffs()
         wireStream& wire = wires_[k];
 
         wire.name = e.keyword();
-        wire.wireRadius = getInRange(dict, "wireRadius", 0, false, inf, false);
-        wire.feedSpeed = getInRange(dict, "feedSpeed", 0, false, inf, false);
-        wire.wireDensity = getInRange
+        ldna::checkKeys
         (
-            dict, "wireDensity", 0, false, inf, false, &wireDensity
+            dict,
+            {
+                "wireRadius", "feedSpeed", "wireDensity", "dropletRadius",
+                "detachmentFrequency", "temperature", "position",
+                "longitudinalSign"
+            }
+        );
+        wire.wireRadius = ldna::getChecked<scalar>
+        (
+            dict, "wireRadius", interval::open(0, limits::length)
+        );
+        wire.feedSpeed = ldna::getChecked<scalar>
+        (
+            dict, "feedSpeed", interval::open(0, limits::speed)
+        );
+        wire.wireDensity = ldna::getCheckedOrDefault<scalar>
+        (
+            dict, "wireDensity", interval::openClosed(0, limits::density),
+            wireDensity
         );
 
         const scalar wireVolumeRate =
@@ -198,15 +210,20 @@ void Foam::fv::dropletSource::readCoeffs()
         }
         if (hasRadius)
         {
-            wire.dropletRadius =
-                getInRange(dict, "dropletRadius", 0, false, inf, false);
+            wire.dropletRadius = ldna::getChecked<scalar>
+            (
+                dict, "dropletRadius", interval::open(0, limits::length)
+            );
             wire.frequency =
                 wireVolumeRate/(4.0/3.0*pi*pow3(wire.dropletRadius));
         }
         else
         {
-            wire.frequency =
-                getInRange(dict, "detachmentFrequency", 0, false, inf, false);
+            wire.frequency = ldna::getChecked<scalar>
+            (
+                dict, "detachmentFrequency",
+                interval::openClosed(0, limits::frequency)
+            );
             wire.dropletRadius =
                 cbrt(3*wireVolumeRate/wire.frequency/(4*pi));
         }
@@ -223,9 +240,10 @@ void Foam::fv::dropletSource::readCoeffs()
         }
 
         const scalar dropletTemperature = 2100;
-        wire.temperature = getInRange
+        wire.temperature = ldna::getCheckedOrDefault<scalar>
         (
-            dict, "temperature", 0, false, inf, false, &dropletTemperature
+            dict, "temperature", interval::open(0, limits::temperature),
+            dropletTemperature
         );
         wire.enthalpy =
             mixture.metalSensibleEnthalpy(wire.temperature)
@@ -372,9 +390,30 @@ void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
     if (cellSize == GREAT)
     {
         FatalIOErrorInFunction(coeffs_)
-            << "The droplet source of wire " << wire.name << " at "
-            << wire.position << " m is outside the mesh, whose bounds are "
+            << "Entry 'position' in " << coeffs_.name() << ": the droplet"
+            << " source of wire " << wire.name << " at " << wire.position
+            << " m is outside the mesh, whose bounds are "
             << boundBox(mesh_.points(), true) << exit(FatalIOError);
+    }
+
+    // Droplets detach above the workpiece: a source in the metal (the
+    // substrate) would add metal where there is no room for it.  Checked on
+    // the initial fields only: a restart may find a droplet just inserted
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+    const scalar metalAtSource = returnReduce
+    (
+        celli != -1 ? alpha[celli] : -GREAT,
+        maxOp<scalar>()
+    );
+    if (mesh_.time().value() == 0 && !(metalAtSource < 0.5))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry 'position' in " << coeffs_.name() << ": the droplet"
+            << " source of wire " << wire.name << " at " << wire.position
+            << " m lies in metal (" << alphaName_ << " = " << metalAtSource
+            << "): it must lie in the gas above the substrate surface"
+            << exit(FatalIOError);
     }
 
     const scalar R = wire.dropletRadius;

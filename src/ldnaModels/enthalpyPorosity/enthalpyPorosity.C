@@ -5,6 +5,7 @@
 #include "enthalpyPorosity.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
@@ -23,43 +24,32 @@ namespace fv
 
 void Foam::fv::enthalpyPorosity::readCoeffs()
 {
-    mushyZoneConstant_ = coeffs_.get<scalar>("mushyZoneConstant");
-    if (!(mushyZoneConstant_ > 0))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'mushyZoneConstant' must be > 0 kg/m3/s, not "
-            << mushyZoneConstant_ << exit(FatalIOError);
-    }
+    using ldna::interval;
 
-    porosityEpsilon_ = coeffs_.get<scalar>("porosityEpsilon");
-    if (!(porosityEpsilon_ > 0 && porosityEpsilon_ < 1))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'porosityEpsilon' must be in (0, 1), not "
-            << porosityEpsilon_ << exit(FatalIOError);
-    }
+    ldna::checkKeys
+    (
+        coeffs_,
+        {
+            "type", "active", "selectionMode", "cellSet", "cellZone",
+            "points", "timeStart", "duration", "mushyZoneConstant",
+            "porosityEpsilon", "weldingSpeed", "weldingDirection", "alpha",
+            "liquidFraction", "U"
+        }
+    );
+
+    mushyZoneConstant_ = ldna::getChecked<scalar>
+    (
+        coeffs_, "mushyZoneConstant",
+        interval::openClosed(0, ldna::limits::mushyZoneConstant)
+    );
+    porosityEpsilon_ = ldna::getChecked<scalar>
+    (
+        coeffs_, "porosityEpsilon", interval::open(0, 1)
+    );
 
     weldingSpeed_ = Function1<scalar>::New("weldingSpeed", coeffs_);
-    {
-        const scalar vw = weldingSpeed_->value(mesh_.time().value());
-        if (!(vw >= 0))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "Entry 'weldingSpeed' must be >= 0 m/s (the direction is"
-                << " set by 'weldingDirection'), not " << vw
-                << " at t = " << mesh_.time().value() << " s"
-                << exit(FatalIOError);
-        }
-    }
-
-    weldingDirection_ = coeffs_.get<vector>("weldingDirection");
-    if (mag(weldingDirection_) < VSMALL)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'weldingDirection' must be a non-zero vector, not "
-            << weldingDirection_ << exit(FatalIOError);
-    }
-    weldingDirection_ /= mag(weldingDirection_);
+    weldingDirection_ = ldna::getDirection(coeffs_, "weldingDirection");
+    substrateVelocity();
 
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     liquidFractionName_ =
@@ -97,13 +87,65 @@ Foam::vector Foam::fv::enthalpyPorosity::substrateVelocity() const
 {
     const scalar t = mesh_.time().value();
     const scalar vw = weldingSpeed_->value(t);
-    if (!(vw >= 0))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'weldingSpeed' must be >= 0 m/s, not " << vw
-            << " at t = " << t << " s" << exit(FatalIOError);
-    }
+    ldna::checkValue
+    (
+        coeffs_, "weldingSpeed", vw,
+        ldna::interval::closedOpen(0, ldna::limits::speed),
+        "at t = " + Foam::name(t) + " s; the direction is weldingDirection"
+    );
     return vw*weldingDirection_;
+}
+
+
+void Foam::fv::enthalpyPorosity::checkInletVelocity(const vector& Us) const
+{
+    // The substrate enters the moving frame on the patches where U is
+    // fixed and metal flows in: there U must be the welding velocity, or
+    // the solid would be pushed or pulled against the porosity sink
+    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+
+    // A relative difference above round-off of the dictionaries' numbers
+    const scalar tolerance = 1e-6;
+    const scalar scale = max(mag(Us), SMALL);
+
+    forAll(U.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& Up = U.boundaryField()[patchi];
+        if (!Up.fixesValue() || Up.coupled())
+        {
+            continue;
+        }
+        const fvPatchScalarField& alphap = alpha.boundaryField()[patchi];
+        const vectorField n(Up.patch().nf());
+
+        scalar worst = 0;
+        vector worstU = Zero;
+        forAll(Up, facei)
+        {
+            const bool metalInflow =
+                alphap[facei] > 0.5 && (Up[facei] & n[facei]) < 0;
+            if (metalInflow && mag(Up[facei] - Us) > worst)
+            {
+                worst = mag(Up[facei] - Us);
+                worstU = Up[facei];
+            }
+        }
+        reduce(worst, maxOp<scalar>());
+        if (worst > tolerance*scale)
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "Entries 'weldingSpeed' and 'weldingDirection' in "
+                << coeffs_.name() << " give the substrate velocity " << Us << " m/s at t = "
+                << mesh_.time().value() << " s, but metal enters through"
+                << " patch " << Up.patch().name() << " of " << UName_
+                << " at up to " << worstU << " m/s (a difference of "
+                << worst << " m/s): the inlet velocity must be the welding"
+                << " velocity (give both from one value, e.g. $weldingSpeed"
+                << " of system/caseParameters)" << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -147,6 +189,7 @@ void Foam::fv::enthalpyPorosity::addSup
         dimVelocity,
         substrateVelocity()
     );
+    checkInletVelocity(Us.value());
 
     eqn -= fvm::Sp(coeff, eqn.psi());
     eqn += coeff*Us;

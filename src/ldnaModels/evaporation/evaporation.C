@@ -9,6 +9,7 @@
 #include "fvMatrices.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -39,6 +40,16 @@ const Foam::scalar recoilFactor = 0.54;
 
 void Foam::fv::evaporation::readCoeffs()
 {
+    ldna::checkKeys
+    (
+        coeffs_,
+        {
+            "type", "active", "model", "boilingTemperature", "latentHeat",
+            "molarMass", "boilingPressure", "recondensation",
+            "recoilPressure", "alpha", "T", "log"
+        }
+    );
+
     const word model(coeffs_.get<word>("model"));
     if (model == "paper")
     {
@@ -55,34 +66,44 @@ void Foam::fv::evaporation::readCoeffs()
             << exit(FatalIOError);
     }
 
+    using ldna::interval;
+
+    const metalGasMixture& mixture =
+        mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
+
+    // The boiling point lies above the melting range of the metal
     boilingTemperature_ = coeffs_.get<scalar>("boilingTemperature");
-    latentHeat_ = coeffs_.get<scalar>("latentHeat");
-    if (boilingTemperature_ <= 0 || latentHeat_ <= 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "boilingTemperature " << boilingTemperature_
-            << " and latentHeat " << latentHeat_ << " must be > 0"
-            << exit(FatalIOError);
-    }
+    ldna::checkValue
+    (
+        coeffs_, "boilingTemperature", boilingTemperature_,
+        interval::open(mixture.Tliquidus(), ldna::limits::temperature),
+        "above the metal's liquidus"
+    );
+    latentHeat_ = ldna::getChecked<scalar>
+    (
+        coeffs_, "latentHeat", interval::openClosed(0, ldna::limits::latentHeat)
+    );
 
     const bool hk = (model_ == evaporationModel::hertzKnudsen);
-    molarMass_ = hk ? coeffs_.get<scalar>("molarMass") : 0;
-    boilingPressure_ =
-        coeffs_.lookupOrDefault<scalar>("boilingPressure", standardPressure);
-    recondensation_ = coeffs_.lookupOrDefault<scalar>("recondensation", 0);
+    // Molar masses [kg/mol]: oganesson, the heaviest element, 0.294 kg/mol
+    const scalar maxMolarMass = 1;
+    molarMass_ = hk
+      ? ldna::getChecked<scalar>
+        (
+            coeffs_, "molarMass", interval::openClosed(0, maxMolarMass)
+        )
+      : 0;
+    boilingPressure_ = ldna::getCheckedOrDefault<scalar>
+    (
+        coeffs_, "boilingPressure",
+        interval::openClosed(0, ldna::limits::pressure), standardPressure
+    );
+    recondensation_ = ldna::getCheckedOrDefault<scalar>
+    (
+        coeffs_, "recondensation", interval::closedOpen(0, 1), 0
+    );
     recoilPressure_ = coeffs_.lookupOrDefault<bool>("recoilPressure", false);
-    if (hk && (molarMass_ <= 0 || boilingPressure_ <= 0))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "molarMass " << molarMass_ << " and boilingPressure "
-            << boilingPressure_ << " must be > 0" << exit(FatalIOError);
-    }
-    if (recondensation_ < 0 || recondensation_ >= 1)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "recondensation " << recondensation_ << " must be in [0, 1)"
-            << exit(FatalIOError);
-    }
+
     if (recoilPressure_ && !hk)
     {
         FatalIOErrorInFunction(coeffs_)

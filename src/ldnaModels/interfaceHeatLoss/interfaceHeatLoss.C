@@ -7,6 +7,7 @@
 #include "interfaceDelta.H"
 #include "fvmSup.H"
 #include "physicoChemicalConstants.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -25,33 +26,35 @@ namespace fv
 
 void Foam::fv::interfaceHeatLoss::readCoeffs()
 {
+    using ldna::interval;
+
+    ldna::checkKeys
+    (
+        coeffs_,
+        {
+            "type", "active", "radiation", "emissivity", "convection",
+            "heatTransferCoeff", "ambientTemperature", "alpha", "T", "log"
+        }
+    );
+
     radiation_ = coeffs_.lookupOrDefault<bool>("radiation", true);
     convection_ = coeffs_.lookupOrDefault<bool>("convection", true);
 
-    emissivity_ = radiation_ ? coeffs_.get<scalar>("emissivity") : 0;
-    if (emissivity_ < 0 || emissivity_ > 1)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "emissivity " << emissivity_ << " must be in [0, 1]"
-            << exit(FatalIOError);
-    }
-
-    heatTransferCoeff_ =
-        convection_ ? coeffs_.get<scalar>("heatTransferCoeff") : 0;
-    if (heatTransferCoeff_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "heatTransferCoeff " << heatTransferCoeff_ << " must be >= 0"
-            << exit(FatalIOError);
-    }
-
-    ambientTemperature_ = coeffs_.get<scalar>("ambientTemperature");
-    if (ambientTemperature_ <= 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "ambientTemperature " << ambientTemperature_ << " must be > 0"
-            << exit(FatalIOError);
-    }
+    emissivity_ = radiation_
+      ? ldna::getChecked<scalar>(coeffs_, "emissivity", interval::closed(0, 1))
+      : 0;
+    heatTransferCoeff_ = convection_
+      ? ldna::getChecked<scalar>
+        (
+            coeffs_, "heatTransferCoeff",
+            interval::closed(0, ldna::limits::heatTransferCoeff)
+        )
+      : 0;
+    ambientTemperature_ = ldna::getChecked<scalar>
+    (
+        coeffs_, "ambientTemperature",
+        interval::open(0, ldna::limits::temperature)
+    );
 
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     TName_ = coeffs_.lookupOrDefault<word>("T", "T");

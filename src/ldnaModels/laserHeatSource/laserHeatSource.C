@@ -40,14 +40,22 @@ const Foam::wordList powerColumns
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-void Foam::fv::laserHeatSource::readCoeffs()
+const Foam::dictionary& Foam::fv::laserHeatSource::checkedKeys
+(
+    const dictionary& coeffs
+)
 {
     wordList known({"type", "active", "alpha", "T", "log"});
     known.append(laserBeam::keys);
     known.append(laserAbsorptionModel::keys);
-    ldna::checkKeys(coeffs_, known);
+    ldna::checkKeys(coeffs, known);
+    return coeffs;
+}
 
-    beam_.read(coeffs_);
+
+void Foam::fv::laserHeatSource::readCoeffs()
+{
+    beam_.read(checkedKeys(coeffs_));
     absorption_ = laserAbsorptionModel::New(coeffs_, mesh_);
 
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
@@ -79,6 +87,17 @@ void Foam::fv::laserHeatSource::update()
 
     // Rays start where their line enters the bounding box of the whole mesh
     const treeBoundBox bounds(boundBox(mesh_.points(), true));
+
+    // The beam aims at the workpiece: a target off the mesh heats nothing
+    // (a typing error in position, offset or oscillation)
+    if (!bounds.contains(c))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry 'position' in " << coeffs_.name() << ": the target "
+            << c << " m at t = " << t << " s (position + offset +"
+            << " oscillation) lies outside the mesh, whose bounds are "
+            << bounds << exit(FatalIOError);
+    }
     const scalar segmentLength = 2*bounds.mag();
     const scalar reach = beam_.sourceDistance() + segmentLength;
 
@@ -197,7 +216,7 @@ Foam::fv::laserHeatSource::laserHeatSource
 )
 :
     option(name, modelType, dict, mesh),
-    beam_(coeffs_),
+    beam_(checkedKeys(coeffs_)),
     absorption_(),
     log_(true),
     powerDensity_

@@ -8,6 +8,7 @@
 #include "cellSource.H"
 #include "fvMatrices.H"
 #include "fvcGrad.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,6 +27,12 @@ namespace fv
 
 void Foam::fv::marangoniForce::readCoeffs()
 {
+    ldna::checkKeys
+    (
+        coeffs_,
+        {"type", "active", "alpha", "liquidFraction", "U", "mixture", "log"}
+    );
+
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     liquidFractionName_ =
         coeffs_.lookupOrDefault<word>("liquidFraction", "liquidFraction");

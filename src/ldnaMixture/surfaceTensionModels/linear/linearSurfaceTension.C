@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "linearSurfaceTension.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -21,16 +22,27 @@ namespace surfaceTensionModels
 
 void Foam::surfaceTensionModels::linear::readCoeffs(const dictionary& sigmaDict)
 {
-    sigma0_ = sigmaDict.get<scalar>("sigma0");
-    dSigmadT_ = sigmaDict.get<scalar>("dSigmadT");
-    Tref_ = sigmaDict.get<scalar>("Tref");
+    using ldna::interval;
+    namespace limits = ldna::limits;
 
-    if (sigma0_ <= 0 || Tref_ <= 0)
-    {
-        FatalIOErrorInFunction(sigmaDict)
-            << "sigma0 " << sigma0_ << " N/m and Tref " << Tref_
-            << " K must be > 0" << exit(FatalIOError);
-    }
+    ldna::checkKeys(sigmaDict, {"type", "T", "sigma0", "dSigmadT", "Tref"});
+
+    sigma0_ = ldna::getChecked<scalar>
+    (
+        sigmaDict, "sigma0", interval::openClosed(0, limits::surfaceTension)
+    );
+    dSigmadT_ = ldna::getChecked<scalar>
+    (
+        sigmaDict, "dSigmadT",
+        interval::closed
+        (
+            -limits::surfaceTensionSlope, limits::surfaceTensionSlope
+        )
+    );
+    Tref_ = ldna::getChecked<scalar>
+    (
+        sigmaDict, "Tref", interval::open(0, limits::temperature)
+    );
 }
 
 

@@ -4,6 +4,7 @@
 
 #include "sahooDebRoySurfaceTension.H"
 #include "physicoChemicalConstants.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,36 +39,63 @@ void Foam::surfaceTensionModels::sahooDebRoy::readCoeffs
     const dictionary& sigmaDict
 )
 {
-    activity_ = sigmaDict.get<scalar>("activity");
-    sigmaMelting_ =
-        sigmaDict.lookupOrDefault<scalar>("sigmaMelting", defaultSigmaMelting);
-    A_ = sigmaDict.lookupOrDefault<scalar>("A", defaultA);
-    Tmelting_ = sigmaDict.lookupOrDefault<scalar>("Tmelting", defaultTmelting);
-    surfaceExcess_ =
-        sigmaDict.lookupOrDefault<scalar>("surfaceExcess", defaultSurfaceExcess);
-    segregationEntropy_ = sigmaDict.lookupOrDefault<scalar>
+    using ldna::interval;
+    namespace limits = ldna::limits;
+
+    ldna::checkKeys
     (
-        "segregationEntropy", defaultSegregationEntropy
-    );
-    adsorptionEnthalpy_ = sigmaDict.lookupOrDefault<scalar>
-    (
-        "adsorptionEnthalpy", defaultAdsorptionEnthalpy
+        sigmaDict,
+        {
+            "type", "T", "activity", "sigmaMelting", "A", "Tmelting",
+            "surfaceExcess", "segregationEntropy", "adsorptionEnthalpy"
+        }
     );
 
-    if
+    // Activity of the surface-active element in wt%: at most all of it
+    const scalar maxActivity = 100;
+    // Surface excess at saturation [mol/m2]: a monolayer of atoms holds
+    // about 3e-5 mol/m2
+    const scalar maxSurfaceExcess = 1e-3;
+    // Segregation entropy factor k_1 (dimensionless; 3.18e-3 for S in Fe)
+    const scalar maxSegregationEntropy = 1;
+    // Standard heat of adsorption [J/mol]: exothermic, -1.66e5 J/mol for S
+    // in Fe; beyond -1e6 exp(-dH/(R T)) overflows at room temperature
+    const scalar maxAdsorptionEnthalpy = 1e6;
+
+    activity_ = ldna::getChecked<scalar>
     (
-        activity_ < 0 || sigmaMelting_ <= 0 || A_ < 0 || Tmelting_ <= 0
-     || surfaceExcess_ < 0 || segregationEntropy_ < 0
-    )
-    {
-        FatalIOErrorInFunction(sigmaDict)
-            << "activity " << activity_ << ", A " << A_
-            << ", surfaceExcess " << surfaceExcess_
-            << " and segregationEntropy " << segregationEntropy_
-            << " must be >= 0; sigmaMelting " << sigmaMelting_
-            << " and Tmelting " << Tmelting_ << " > 0"
-            << exit(FatalIOError);
-    }
+        sigmaDict, "activity", interval::closed(0, maxActivity)
+    );
+    sigmaMelting_ = ldna::getCheckedOrDefault<scalar>
+    (
+        sigmaDict, "sigmaMelting",
+        interval::openClosed(0, limits::surfaceTension), defaultSigmaMelting
+    );
+    A_ = ldna::getCheckedOrDefault<scalar>
+    (
+        sigmaDict, "A", interval::closed(0, limits::surfaceTensionSlope),
+        defaultA
+    );
+    Tmelting_ = ldna::getCheckedOrDefault<scalar>
+    (
+        sigmaDict, "Tmelting", interval::open(0, limits::temperature),
+        defaultTmelting
+    );
+    surfaceExcess_ = ldna::getCheckedOrDefault<scalar>
+    (
+        sigmaDict, "surfaceExcess", interval::closed(0, maxSurfaceExcess),
+        defaultSurfaceExcess
+    );
+    segregationEntropy_ = ldna::getCheckedOrDefault<scalar>
+    (
+        sigmaDict, "segregationEntropy",
+        interval::closed(0, maxSegregationEntropy), defaultSegregationEntropy
+    );
+    adsorptionEnthalpy_ = ldna::getCheckedOrDefault<scalar>
+    (
+        sigmaDict, "adsorptionEnthalpy",
+        interval::closed(-maxAdsorptionEnthalpy, 0), defaultAdsorptionEnthalpy
+    );
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "temperatureSurfaceTension.H"
+#include "checkedInput.H"
 #include "volFields.H"
 #include "metalGasMixture.H"
 
@@ -35,15 +36,14 @@ void Foam::surfaceTensionModels::temperatureSurfaceTension::read
     for (label i = 0; i <= nSamples; ++i)
     {
         const scalar T = Tmin + (Tmax - Tmin)*i/nSamples;
-        const scalar s = sigma(T);
-        if (!(s > 0))
-        {
-            FatalIOErrorInFunction(sigmaDict)
-                << "The surface tension " << s << " N/m at T = " << T
-                << " K must be > 0 on [" << Tmin << ", " << Tmax
-                << "] K: check the coefficients of sigma"
-                << exit(FatalIOError);
-        }
+        ldna::checkValue
+        (
+            sigmaDict, "sigma", sigma(T),
+            ldna::interval::openClosed(0, ldna::limits::surfaceTension),
+            "the surface tension [N/m] at T = " + Foam::name(T)
+          + " K of [" + Foam::name(Tmin) + ", " + Foam::name(Tmax)
+          + "] K that its coefficients give"
+        );
     }
 }
 

@@ -122,12 +122,7 @@ void Foam::laserBeam::read(const dictionary& dict)
 
     const auto unitVector = [&](const word& key, const vector& deflt)
     {
-        const vector v(dict.lookupOrDefault<vector>(key, deflt));
-        ldna::checkValue
-        (
-            dict, key, mag(v), interval::open(SMALL, GREAT), "its length"
-        );
-        return v/mag(v);
+        return ldna::getDirection(dict, key, &deflt);
     };
     oscillationDirection_ = unitVector("oscillationDirection", vector(0, 1, 0));
     verticalDirection_ = unitVector("verticalDirection", vector(0, 0, 1));

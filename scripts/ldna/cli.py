@@ -5,6 +5,7 @@ import argparse
 import json
 import os
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 from . import benchmark, meshing
@@ -95,24 +96,23 @@ def _case(text: str) -> str:
     return text
 
 
-def _positive_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"{value} must be at least 1")
-    return value
+def _whole_number(low: int, high: int | None, what: str = "") -> Callable[[str], int]:
+    """An argparse type: a whole number in [low, high] (no upper bound: None)."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
+        if high is None and value < low:
+            raise argparse.ArgumentTypeError(f"{value} must be at least {low}")
+        if high is not None and not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"{what}{value} must lie in {low}..{high}")
+        return value
+    return parse
 
 
-def _level(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number")
-    if not 0 <= value <= 3:
-        raise argparse.ArgumentTypeError(f"level {value} must lie in 0..3")
-    return value
+_positive_int = _whole_number(1, None)
+_level = _whole_number(0, 3, "level ")
 
 
 def _positive_float(text: str) -> float:

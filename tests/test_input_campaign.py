@@ -32,7 +32,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.foamcase import ENV_SCRIPT, alpha_bounds, copy_case, read_balances, run
+from ldna.foamcase import (ENV_SCRIPT, alpha_bounds, copy_case, read_balances, run,
+                           time_directories)
 from ldna.foamdict import set_entry
 
 pytestmark = pytest.mark.bad_input
@@ -320,3 +321,40 @@ def test_mesh_levels_rejects_a_domain_that_cannot_be_meshed(tmp_path: Path) -> N
                                 text=True, timeout=60, check=False)
         assert result.returncode != 0 and "Traceback" not in result.stderr
         assert f"{entry} must be in (0, 1e4) mm" in result.stderr
+
+
+def test_an_error_mid_run_leaves_the_last_written_time_restartable(coarse_template: Path) -> None:
+    """A welding speed that turns negative at 0.5 ms stops the run there with
+    the entry named; the last written time holds every field and the run
+    restarts from it once the input is fixed."""
+    case = coarse_template.parent / "midRunError"
+    shutil.copytree(coarse_template, case, ignore=shutil.ignore_patterns("log.*", "postProcessing"))
+    control = case / "system" / "controlDict"
+    set_entry(control, "endTime", "1e-3")
+    set_entry(control, "writeControl", "timeStep")
+    set_entry(control, "writeInterval", "1")
+    porosity = "enthalpyPorosity/weldingSpeed"
+    run(case, f"foamDictionary -entry {porosity} -set "
+              "'table ((0 0.0075) (5e-4 0.0075) (5.0001e-4 -1) (1 -1))' constant/fvOptions",
+        log_name="foamDictionary")
+
+    failed = run(case, "ldnaFoam", check=False)
+    error = failed.output[failed.output.find("FOAM FATAL"):]
+    print(error[:300])
+    assert failed.returncode != 0 and "'weldingSpeed'" in error
+
+    written = [t for t in time_directories(case) if float(t.name) > 0]
+    assert written, "no time was written before the error"
+    last = written[-1]
+    assert 0 < float(last.name) <= 5.0001e-4 + 1e-12
+    fields = {"alpha.metal", "T", "U", "p", "p_rgh"}
+    assert fields <= {path.name for path in last.iterdir()}, sorted(p.name for p in last.iterdir())
+
+    run(case, f"foamDictionary -entry {porosity} -set 'constant 0.0075' constant/fvOptions",
+        log_name="foamDictionary.fix")
+    set_entry(control, "startFrom", "latestTime")
+    restarted = run(case, "ldnaFoam", log_name="ldnaFoam.restart")
+    assert f"Create mesh for time = {last.name}" in restarted.output
+    assert "End" in restarted.output
+    balances = read_balances(restarted.log)
+    assert np.all(np.isfinite(balances["T_max"])) and np.all(np.isfinite(balances["metal_mass"]))

@@ -43,6 +43,7 @@ Description
 #include "metalInsertion.H"
 #include "harmonic.H"
 #include "checkedInput.H"
+#include "profiling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -79,9 +80,11 @@ int main(int argc, char *argv[])
     {
         #include "readTimeControls.H"
         #include "checkControls.H"
+        addProfiling(deltaT, "ldnaFoam.setDeltaT");
         #include "CourantNo.H"
         #include "alphaCourantNo.H"
         #include "setDeltaT.H"
+        endProfiling(deltaT);
 
         ++runTime;
 
@@ -92,22 +95,34 @@ int main(int argc, char *argv[])
         // --- Pressure-velocity PIMPLE corrector loop
         while (pimple.loop())
         {
+            // Each stage is timed when controlDict has profiling active
+            addProfiling(alpha, "ldnaFoam.alpha");
             #include "metalMassSource.H"
             #include "alphaControls.H"
             #include "alphaEqnSubCycle.H"
+            endProfiling(alpha);
 
+            addProfiling(momentum, "ldnaFoam.UEqn");
             #include "UEqn.H"
+            endProfiling(momentum);
+
+            addProfiling(energy, "ldnaFoam.TEqn");
             #include "TEqn.H"
+            endProfiling(energy);
 
             // --- Pressure corrector loop
+            addProfiling(pressure, "ldnaFoam.pEqn");
             while (pimple.correct())
             {
                 #include "pEqn.H"
             }
+            endProfiling(pressure);
         }
 
+        addProfiling(insertion, "ldnaFoam.insertMetal");
         #include "metalVolumeCorrection.H"
         #include "insertMetal.H"
+        endProfiling(insertion);
         #include "reportBalances.H"
         #include "write.H"
 

@@ -57,7 +57,7 @@ BAD_INPUTS = [
      ["referenceTemperature", "is 0", "must lie in (0, "]),
     ("surface tension negative below 3200 K", THERMO, "sigma",
      "{ type linear; sigma0 0.3; dSigmadT -4.3e-4; Tref 1950; }",
-     ["surface tension", "3200", "must lie in (0, 10]"]),
+     ["surface tension", "3200", "must lie in (0, 100]"]),
     ("negative sulphur activity", THERMO, "sigma", "{ type sahooDebRoy; activity -0.01; }",
      ["activity", "must lie in [0, 100]"]),
     ("recondensation of 1", FV_OPTIONS, "evaporation",

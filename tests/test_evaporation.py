@@ -24,7 +24,7 @@ from ldna.foamcase import (alpha_bounds, read_balances, read_internal_field, run
 from ldna.foamdict import set_entry
 from ldna.material import Metal
 
-#: Evaporation data of iron (physics-notes.md): boiling point at 1 atm,
+#: Evaporation data of iron (docs/physics-data.md): boiling point at 1 atm,
 #: latent heat, molar mass; recondensation share of the Hertz-Knudsen flux
 BOILING_TEMPERATURE = 3090.0
 LATENT_HEAT = 6.5e6

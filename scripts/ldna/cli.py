@@ -115,24 +115,22 @@ _positive_int = _whole_number(1, None)
 _level = _whole_number(0, 3, "level ")
 
 
-def _positive_float(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number")
-    if not (0 < value < float("inf")):
-        raise argparse.ArgumentTypeError(f"{text} must be a positive, finite number")
-    return value
+def _real_number(positive: bool) -> Callable[[str], float]:
+    """An argparse type: a finite number (positive: above zero as well)."""
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a number")
+        if not (abs(value) < float("inf")) or (positive and not value > 0):
+            raise argparse.ArgumentTypeError(
+                f"{text} must be a {'positive, ' if positive else ''}finite number")
+        return value
+    return parse
 
 
-def _finite_float(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number")
-    if not (abs(value) < float("inf")):
-        raise argparse.ArgumentTypeError(f"{text} must be a finite number")
-    return value
+_positive_float = _real_number(positive=True)
+_finite_float = _real_number(positive=False)
 
 
 def _post(args: argparse.Namespace) -> int:

@@ -115,11 +115,8 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
     fixedBeadSection_ = dict.found("beadSection");
     if (fixedBeadSection_)
     {
-        beadSection_ = ldna::getChecked<scalar>
-        (
-            dict, "beadSection",
-            ldna::interval::open(-ldna::limits::length, ldna::limits::length)
-        );
+        // Checked against the mesh once its slices are known (read())
+        beadSection_ = dict.get<scalar>("beadSection");
     }
 }
 

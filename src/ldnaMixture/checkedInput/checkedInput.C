@@ -48,14 +48,21 @@ Foam::vector Foam::ldna::getDirection
     const vector v =
         (deflt && !dict.found(key)) ? *deflt : dict.get<vector>(key);
 
-    // Components up to this size keep |v|^2 finite
+    // Components up to this size keep |v|^2 finite.  Each is checked:
+    // a maximum over the components would pass a NaN next to a number
     const scalar largestComponent = 1e100;
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        checkValue
+        (
+            dict, key, mag(v[i]), interval::closedOpen(0, largestComponent),
+            "the magnitude of component " + Foam::name(i) + " of a direction"
+        );
+    }
     checkValue
     (
-        dict, key, cmptMax(cmptMag(v)),
-        interval::open(VSMALL, largestComponent),
-        "the largest magnitude of its components: a finite, non-zero"
-        " direction"
+        dict, key, mag(v), interval::open(VSMALL, GREAT),
+        "its length: a non-zero direction"
     );
     return v/mag(v);
 }

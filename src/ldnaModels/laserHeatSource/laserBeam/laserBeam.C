@@ -22,12 +22,13 @@ const Foam::scalar defaultOscillationFrequency = 10;
 const Foam::scalar defaultSourceDistance = 0.3;
 
 // Largest beam power [W], radius and oscillation amplitude [m], frequency
-// [1/s] and source distance [m] accepted: beyond welding lasers by orders
-// of magnitude, but finite in every product of a step
+// [1/s] and source distance [m] (the project's length limit) accepted:
+// beyond welding lasers by orders of magnitude, but finite in every product
+// of a step
 const Foam::scalar maxPower = 1e6;
 const Foam::scalar maxLength = 0.1;
 const Foam::scalar maxFrequency = 1e4;
-const Foam::scalar maxSourceDistance = 10;
+const Foam::scalar maxSourceDistance = Foam::ldna::limits::length;
 
 // The Gaussian beam of eq. 48 holds all but exp(-3 k^2) of its power within
 // k beam radii; pixels cover 2 radii (a share of 6e-6 left out, given to the

@@ -195,6 +195,26 @@ class SolverCosts:
         """Serial time over (ranks x parallel time), per step."""
         return self.serial_all_effects / (self.n_procs * self.parallel_all_effects)
 
+    def summary(self) -> dict[str, object]:
+        """The figures as one JSON-ready object (``ldna bench --json``)."""
+        return {
+            "level": self.level,
+            "cells": self.cells,
+            "steps": self.steps,
+            "delta_t_s": self.delta_t,
+            "repeats": self.repeats,
+            "reference_s_per_step": self.compressible_inter_foam,
+            "no_effects_s_per_step": self.ldna_no_effects,
+            "all_effects_s_per_step": self.all_effects,
+            "no_effects_ratio": self.ldna_no_effects / self.compressible_inter_foam,
+            "all_effects_ratio": self.all_effects / self.compressible_inter_foam,
+            "effect_ratios": {cost.variant: cost.ratio for cost in self.effects},
+            f"np{self.n_procs}_efficiency": self.parallel_efficiency,
+            "throughput_cell_steps_per_core_s": self.throughput,
+            "template_delta_t_s": self.template_delta_t,
+            "projected_core_hours_per_simulated_s": self.projected_core_hours(),
+        }
+
 
 def _fixed_steps(case: Path, steps: int, delta_t: float) -> None:
     control = case / "system" / "controlDict"

@@ -26,7 +26,10 @@ def _bench_laser(args: argparse.Namespace) -> int:
 def _bench(args: argparse.Namespace) -> int:
     costs = benchmark.solver_costs(level=args.level, steps=args.steps, n_procs=args.np,
                                    repeats=args.repeats)
-    benchmark.print_solver_costs(costs)
+    if args.json:
+        print(json.dumps(costs.summary()))
+    else:
+        benchmark.print_solver_costs(costs)
     return 0
 
 
@@ -184,6 +187,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--np", type=_positive_int, default=2, help="MPI ranks of the parallel run")
     bench.add_argument("--repeats", type=_positive_int, default=3,
                        help="runs of each variant; the least time per step counts")
+    bench.add_argument("--json", action="store_true",
+                       help="print the figures as one JSON object instead of a table")
     bench.set_defaults(func=_bench)
 
     gmsh = commands.add_parser(

@@ -42,6 +42,9 @@ Description
 #include "fvOptions.H"
 #include "metalInsertion.H"
 #include "harmonic.H"
+#include "localMax.H"
+#include "upwind.H"
+#include "convectionScheme.H"
 #include "checkedInput.H"
 #include "profiling.H"
 

@@ -600,6 +600,22 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp2() const
 }
 
 
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho2Heat() const
+{
+    if (gasBoussinesq_)
+    {
+        const dimensionedScalar Tref
+        (
+            "referenceTemperature",
+            dimTemperature,
+            gasReferenceTemperature_
+        );
+        return rho2_*Tref/T_;
+    }
+    return tmp<volScalarField>::New("rho2Heat", rho2_);
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho() const
 {
     return alpha1()*rho1_ + alpha2()*rho2_;
@@ -625,7 +641,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rhoGravity() const
 Foam::tmp<Foam::volScalarField>
 Foam::metalGasMixture::volumetricEnthalpy() const
 {
-    return alpha1()*rho1_*h1() + alpha2()*rho2_*h2();
+    return alpha1()*rho1_*h1() + alpha2()*rho2Heat()*h2();
 }
 
 

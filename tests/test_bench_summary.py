@@ -1,0 +1,26 @@
+"""``ldna bench --json``: the benchmark's figures as one object, with the
+ratios the performance goals are stated in."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from ldna.benchmark import SolverCosts, StepCost
+
+
+@pytest.mark.unit
+def test_summary_holds_the_ratios_of_the_measured_times() -> None:
+    costs = SolverCosts(
+        level=0, cells=36077, steps=40, delta_t=5e-5,
+        ldna_no_effects=0.30, compressible_inter_foam=0.25,
+        effects=[StepCost("wireDroplets", 0.33, 0.33 / 0.30)],
+        all_effects=0.45, template_delta_t=1.2e-4,
+        serial_all_effects=0.45, parallel_all_effects=0.30, n_procs=2, repeats=3)
+    summary = json.loads(json.dumps(costs.summary()))
+    assert summary["reference_s_per_step"] == 0.25
+    assert summary["no_effects_ratio"] == pytest.approx(0.30 / 0.25)
+    assert summary["all_effects_ratio"] == pytest.approx(0.45 / 0.25)
+    assert summary["effect_ratios"] == {"wireDroplets": pytest.approx(1.1)}
+    assert summary["np2_efficiency"] == pytest.approx(0.45 / (2 * 0.30))
+    assert (summary["cells"], summary["level"]) == (36077, 0)

@@ -17,7 +17,7 @@ run must end in one of two ways:
 Anything else (a signal, an error that does not name the entry, NaN in the
 fields, a misspelt key that runs with its default, a hang) counts as
 "other", and there must be none.  The table of entries x variants and the
-totals are printed (pytest -s); the README quotes the totals.
+totals are printed (pytest -s); docs/validation.md quotes the totals.
 """
 from __future__ import annotations
 

@@ -10,6 +10,8 @@ test_cluster.
 """
 from __future__ import annotations
 
+import json
+
 import os
 import re
 import signal
@@ -76,6 +78,13 @@ def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
     assert post.returncode == 0, post.output[-3000:]
     for picture in ("surface.png", "transverse.png", "longitudinal.png"):
         assert (case / "pictures" / picture).stat().st_size > 10_000, picture
+
+    as_json = run_as_user(f"build/venv/bin/ldna post {case} --json", shell=shell)
+    assert as_json.returncode == 0, as_json.output[-3000:]
+    figures = json.loads([line for line in as_json.output.splitlines()
+                          if line.startswith("{")][-1])
+    assert figures["time_s"] == pytest.approx(last_solved_time(case), rel=1e-4)
+    assert figures["expected_bead_area_mm2"] > 0
 
 
 def _kill_solver_in(directory: Path) -> int:

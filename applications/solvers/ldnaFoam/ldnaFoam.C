@@ -43,6 +43,7 @@ Description
 #include "metalInsertion.H"
 #include "harmonic.H"
 #include "localMax.H"
+#include "localMin.H"
 #include "upwind.H"
 #include "convectionScheme.H"
 #include "checkedInput.H"

@@ -20,8 +20,9 @@ from conftest import prepare_test_case
 from ldna.foamcase import (dictionary_scalar, read_internal_field, run, run_parallel,
                            write_internal_field)
 from ldna.foamdict import set_entry
-from ldna.post import (BeadMetrics, configured_bead_section, fusion_temperature, metrics,
-                       post_process, read_case, read_function_object_metrics, wetting_angle)
+from ldna.post import (BeadMetrics, bead_not_yet_there, configured_bead_section,
+                       fusion_temperature, metrics, post_process, read_case,
+                       read_function_object_metrics, wetting_angle)
 from ldna.meshing import mesh_case
 
 #: Cell size of the synthetic case [m] (tests/cases/syntheticPool)
@@ -258,3 +259,13 @@ def test_wetting_angle_of_flat_and_square_deposits() -> None:
     expected = math.degrees(math.atan2(height / 2, toe_gap))
     measured = wetting_angle(y, np.full_like(y, height), -1e-3 - toe_gap, 1e-3 + toe_gap)
     assert measured == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.unit
+def test_a_run_shorter_than_the_bead_travel_says_so() -> None:
+    section = 20.1e-3
+    early = bead_not_yet_there(arrival=1.48, time=0.5, section=section)
+    assert early is not None and "20.10 mm" in early and "1.5 s" in early
+    assert "--end-time 2" in early
+    assert bead_not_yet_there(arrival=1.48, time=1.48, section=section) is None
+    assert bead_not_yet_there(arrival=None, time=0.5, section=section) is None

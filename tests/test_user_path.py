@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import PROJECT_DIR, time_directories
+from ldna.foamcase import PROJECT_DIR, dictionary_scalar, time_directories
 from userpath import SHELLS, run_as_user, user_command
 
 pytestmark = pytest.mark.user_path
@@ -72,6 +72,8 @@ def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
     assert last_solved_time(case) > 0.8 * END_TIME
     assert (case / "ldna.foam").exists()
     assert "bead width" in scene.output and "peak metal T" in scene.output
+    # A run shorter than the bead's travel to its section says so
+    assert "The bead has not reached the section" in scene.output
     assert f"Results: {case}" in scene.output
 
     post = run_as_user(f"build/venv/bin/ldna post {case}", shell=shell)
@@ -85,6 +87,11 @@ def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
                           if line.startswith("{")][-1])
     assert figures["time_s"] == pytest.approx(last_solved_time(case), rel=1e-4)
     assert figures["expected_bead_area_mm2"] > 0
+    # The bead's start travels from the wires' midpoint with the substrate
+    parameters = "system/caseParameters"
+    travel_mm = figures["bead_section_mm"] - dictionary_scalar(case, parameters, "processPosition")
+    speed_mm_s = 1e3 * dictionary_scalar(case, parameters, "weldingSpeed")
+    assert figures["bead_arrival_s"] == pytest.approx(travel_mm / speed_mm_s, rel=1e-6)
 
 
 def _kill_solver_in(directory: Path) -> int:

@@ -5,6 +5,7 @@ import argparse
 import json
 import os
 import sys
+import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
@@ -151,6 +152,10 @@ def _post(args: argparse.Namespace) -> int:
         print(json.dumps(post.summary(Path(args.case), result, time)))
         return 0
     print(post.format_metrics(result))
+    note = post.bead_not_yet_there(post.bead_arrival_time(case, result.bead_section), time,
+                                   result.bead_section)
+    if note:
+        print(textwrap.fill(note, width=79))
     for picture in pictures:
         print(picture)
     return 0

@@ -224,6 +224,44 @@ def expected_bead_area(case: Path) -> float:
     return mass_rate / (Metal.from_case(case).reference_density * welding_speed)
 
 
+def bead_arrival_time(case: Path, section: float) -> float | None:
+    """When the start of the bead reaches the transverse section at x = ``section`` [s].
+
+    Deposition starts under the wires at t = 0 and the deposit travels with
+    the substrate: (section - wires' midpoint) / welding speed, read from the
+    case's dropletSource (``wireDroplets``) and enthalpy-porosity entries.
+    Before then the section holds no bead, whatever the models.  None for a
+    case without wires or without a moving substrate.
+    """
+    try:
+        return _bead_arrival_time(Path(case), section)
+    except KeyError:
+        return None
+
+
+def _bead_arrival_time(case: Path, section: float) -> float:
+    from .foamcase import dictionary_scalar, dictionary_value
+
+    source = "constant/fvOptions"
+    first_wire_x = float(dictionary_value(case, source, "wireDroplets/position").strip("()").split()[0])
+    wires = re.findall(r"^\s*(\w+)\s*$", dictionary_value(case, source, "wireDroplets/wires"), re.M)
+    spacing = dictionary_scalar(case, source, "wireDroplets/wireSpacing")
+    midpoint = first_wire_x + 0.5 * (len(wires) - 1) * spacing
+    welding_speed = dictionary_scalar(case, source, "enthalpyPorosity/weldingSpeed")
+    return (section - midpoint) / welding_speed
+
+
+def bead_not_yet_there(arrival: float | None, time: float, section: float) -> str | None:
+    """What to tell a user whose run ended before the bead reached its section, else None."""
+    if arrival is None or time >= arrival:
+        return None
+    return (f"The bead has not reached the section x = {1e3 * section:.2f} mm yet: its start "
+            f"arrives there after about {arrival:.2g} s of welding and this run ends at "
+            f"{time:.3g} s.  The section metrics above are of the substrate; for the bead run "
+            f"longer (bin/ldna-scene --end-time {max(2.0, round(arrival + 1.0)):g}, or endTime "
+            "in system/controlDict).")
+
+
 def configured_bead_section(case: Path) -> float | None:
     """The bead section [m] the case's meltPoolMetrics function object uses, if any."""
     from .foamcase import dictionary_scalar
@@ -250,6 +288,7 @@ def summary(case: Path, result: BeadMetrics, time: float) -> dict[str, float]:
         "fused_area_mm2": 1e6 * result.fused_area,
         "bead_section_mm": 1e3 * result.bead_section,
         "peak_metal_temperature_K": result.peak_temperature,
+        "bead_arrival_s": bead_arrival_time(case, result.bead_section),
     }
 
 

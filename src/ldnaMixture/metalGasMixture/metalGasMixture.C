@@ -64,14 +64,15 @@ bool Foam::metalGasMixture::readBoussinesq
 }
 
 
-Foam::autoPtr<Foam::Function1<Foam::scalar>>
+Foam::autoPtr<Foam::temperatureTable>
 Foam::metalGasMixture::readFunction
 (
     const dictionary& dict,
     const word& entryName,
     const scalar T0,
     const scalar T1,
-    const scalar maxValue
+    const scalar maxValue,
+    const bool withIntegral
 ) const
 {
     autoPtr<Function1<scalar>> f(Function1<scalar>::New(entryName, dict));
@@ -91,7 +92,7 @@ Foam::metalGasMixture::readFunction
         );
     }
 
-    return f;
+    return autoPtr<temperatureTable>::New(std::move(f), T0, T1, withIntegral);
 }
 
 
@@ -162,14 +163,19 @@ void Foam::metalGasMixture::readCoeffs()
     const scalar Tmax = propertyCheckTmax;
 
     // Solid and liquid property functions, each on its range of use
-    auto readPhases = [&](const word& property, const scalar maxValue)
+    auto readPhases = [&]
+    (
+        const word& property,
+        const scalar maxValue,
+        const bool withIntegral = false
+    )
     {
         const dictionary& dict = metal.subDict(property);
         ldna::checkKeys(dict, {"solid", "liquid"});
         return std::make_pair
         (
-            readFunction(dict, "solid", Tmin, Ts, maxValue),
-            readFunction(dict, "liquid", Tl, Tmax, maxValue)
+            readFunction(dict, "solid", Tmin, Ts, maxValue, withIntegral),
+            readFunction(dict, "liquid", Tl, Tmax, maxValue, withIntegral)
         );
     };
 
@@ -177,7 +183,7 @@ void Foam::metalGasMixture::readCoeffs()
     rhoSolid_ = std::move(rho.first);
     rhoLiquid_ = std::move(rho.second);
 
-    auto Cp = readPhases("Cp", limits::specificHeat);
+    auto Cp = readPhases("Cp", limits::specificHeat, true);
     CpSolid_ = std::move(Cp.first);
     CpLiquid_ = std::move(Cp.second);
 
@@ -204,7 +210,10 @@ void Foam::metalGasMixture::readCoeffs()
         limits::temperature, gasReferenceTemperature_
     );
 
-    CpGas_ = readFunction(gas, "Cp", Tmin, Tmax, limits::specificHeat);
+    CpGas_ = readFunction
+    (
+        gas, "Cp", Tmin, Tmax, limits::specificHeat, true
+    );
     kappaGas_ = readFunction(gas, "kappa", Tmin, Tmax, limits::conductivity);
     muGas_ = readFunction(gas, "mu", Tmin, Tmax, limits::viscosity);
 }

@@ -32,10 +32,10 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "CMULES.H"
 #include "EulerDdtScheme.H"
 #include "localEulerDdtScheme.H"
-#include "CrankNicolsonDdtScheme.H"
+#include "gaussConvectionScheme.H"
+#include "metalFractionLimiter.H"
 #include "subCycle.H"
 #include "metalGasMixture.H"
 #include "pimpleControl.H"

@@ -38,7 +38,7 @@ GAS_CONSTANT = 8.314462618
 SURFACE_TEMPERATURE = 3500.0
 SURFACE_AREA = 8e-3 * 8e-3
 
-#: Allowed error (issue 5)
+#: Allowed relative error of the evaporation rate
 RATE_TOLERANCE = 0.02
 
 def evaporation_entry(model: str, extra: str = "") -> str:

@@ -34,9 +34,9 @@ from ldna.foamcase import alpha_bounds, dictionary_scalar, read_balances, run, r
 from ldna.foamdict import read_scalars, set_block_entry, set_entry
 from ldna.meshing import mesh_case
 
-#: Metal fraction bounds of the issue
+#: Metal fraction bounds: a bounded scheme keeps it within 1e-6 of [0, 1]
 ALPHA_LOW, ALPHA_HIGH = -1e-6, 1 + 1e-6
-#: Allowed metal mass residual relative to the turnover (issue 7: 0.5 %)
+#: Allowed metal mass residual relative to the turnover (0.5 %)
 MASS_TOLERANCE = 5e-3
 #: How far below the ambient temperature the field may go [K]: an undershoot
 #: of the energy equation, nothing in the scene is colder than ambient

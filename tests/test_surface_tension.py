@@ -18,7 +18,7 @@ import pytest
 from ldna.foamcase import dictionary_scalar, read_internal_field, run, time_directories
 from ldna.foamdict import set_entry
 
-#: Allowed errors (issue 5)
+#: Allowed errors of the capillary checks
 LAPLACE_TOLERANCE = 0.02
 SPURIOUS_VELOCITY_SCALE = 1e-3     # times sigma/mu
 SURFACE_VELOCITY_TOLERANCE = 0.05

@@ -16,6 +16,9 @@ from ldna.foamdict import set_entry
 
 FV_OPTIONS = "constant/fvOptions"
 THERMO = "constant/thermophysicalProperties"
+FV_SOLUTION = "system/fvSolution"
+FV_SCHEMES = "system/fvSchemes"
+ALPHA_CONTROLS = 'solvers/"alpha.metal.*"'
 
 VALID_FV_OPTIONS = """FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }
 
@@ -67,6 +70,14 @@ BAD_INPUTS = [
     ("unknown evaporation model", FV_OPTIONS, "evaporation",
      "{ type evaporation; model boiling; boilingTemperature 3090; latentHeat 6.5e6; }",
      ["model", "boiling", "paper or hertzKnudsen"]),
+    ("explicit metal fraction", FV_SOLUTION, f"{ALPHA_CONTROLS}/MULESCorr", "no",
+     ["MULESCorr", "semi-implicitly", "(MULESCorr yes) only"]),
+    ("zero limiter sweeps", FV_SOLUTION, f"{ALPHA_CONTROLS}/nLimiterIter", "0",
+     ["nLimiterIter", "is 0", "must lie in [1, 1000]"]),
+    ("negative limiter tolerance", FV_SOLUTION, f"{ALPHA_CONTROLS}/limiterTolerance", "-1",
+     ["limiterTolerance", "is -1", "must lie in [0, 1]"]),
+    ("Crank-Nicolson metal fraction", FV_SCHEMES, "ddtSchemes/ddt(alpha)", "CrankNicolson 0.9",
+     ["ddt(alpha) is CrankNicolson", "Euler only"]),
 ]
 
 

@@ -9,15 +9,13 @@ ldnaFoam the session fails.
 from __future__ import annotations
 
 import shutil
-import sys
 from pathlib import Path
 
 import pytest
 
-PROJECT_DIR = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(PROJECT_DIR / "scripts"))
+from ldna.foamcase import copy_case, run
 
-from ldna.foamcase import copy_case, run  # noqa: E402
+PROJECT_DIR = Path(__file__).resolve().parents[1]
 
 TEST_CASES = Path(__file__).resolve().parent / "cases"
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.balance import WIRE_LOG_COLUMNS, wire_log
+from ldna.balance import WIRE_COLUMNS, wire_table
 from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances, read_internal_field,
                            run, time_directories)
 from ldna.foamdict import set_entry
@@ -68,18 +68,18 @@ def test_inserted_droplet_is_a_sphere_of_exact_volume(insertion_box: Path) -> No
     alpha = read_internal_field(last / "alpha.metal")
     run(case, "postProcess -func writeCellVolumes -latestTime", log_name="postProcess")
     volumes = read_internal_field(last / "V")
-    n_droplets = sum(len(np.unique(values[:, 0])) - 1 for values in wire_log(result.log).values())
+    n_droplets = sum(len(np.unique(values[:, 0])) - 1 for values in wire_table(case).values())
     assert n_droplets == 2, "one droplet per wire by the end of the first pulse"
     expected = n_droplets * 4 / 3 * math.pi * radius**3
     assert abs(np.sum(alpha * volumes) / expected - 1) < VOLUME_TOLERANCE
     assert alpha.max() >= BODY_FRACTION, "the droplet is a body of metal, not a smear"
-    low, high = alpha_bounds(result.log)
+    low, high = alpha_bounds(case)
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
 
     # The solver's metal mass is the mass the source reports it inserted
-    balances = read_balances(result.log)
-    added = sum(values[-1, WIRE_LOG_COLUMNS.index("added mass")]
-                for values in wire_log(result.log).values())
+    balances = read_balances(case)
+    added = sum(values[-1, WIRE_COLUMNS.index("addedMass")]
+                for values in wire_table(case).values())
     assert balances["metal_mass"][-1] - balances["metal_mass"][0] == pytest.approx(added, rel=1e-6)
 
 
@@ -171,5 +171,5 @@ def test_template_droplets_arrive_as_bodies_into_a_pool(ldna_case: Path) -> None
     molten_substrate = (z < 0) & (alpha > 0.5) & (liquid > 0.5)
     print(f"landed: {molten_substrate.sum()} molten substrate cells")
     assert molten_substrate.sum() > 0, "a pool melts into the substrate"
-    low, high = alpha_bounds(case / "log.ldnaFoam")
+    low, high = alpha_bounds(case)
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND

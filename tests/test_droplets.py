@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.balance import WIRE_LOG_COLUMNS, wire_log
+from ldna.balance import WIRE_COLUMNS, wire_table
 from ldna.foamcase import (alpha_bounds, dictionary_scalar, dictionary_value,
                            read_balances, read_internal_field, run, time_directories)
 from ldna.foamdict import set_entry
@@ -61,9 +61,9 @@ def wire_mass_rate(case: Path, wire: str) -> float:
     return density * feed * math.pi * radius**2
 
 
-def logged_wire_values(log: Path, wire: str, key: str) -> np.ndarray:
-    """Per-step values the droplet source logs for a wire (added mass, on time ...)."""
-    return wire_log(log)[wire][:, WIRE_LOG_COLUMNS.index(key)]
+def wire_values(case: Path, wire: str, key: str) -> np.ndarray:
+    """Per-step values the droplet source writes for a wire (addedMass, onTime ...)."""
+    return wire_table(case)[wire][:, WIRE_COLUMNS.index(key)]
 
 
 def finite_fields(time_dir: Path) -> bool:
@@ -83,8 +83,7 @@ def droplet_case(tmp_path: Path) -> Path:
 def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
     case = droplet_case
     run(case, "ldnaFoam")
-    log = case / "log.ldnaFoam"
-    balances = read_balances(log)
+    balances = read_balances(case)
     start, end = balances[0], balances[-1]
     elapsed = end["time"] - start["time"]
     wires = wire_names(case)
@@ -99,7 +98,7 @@ def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
 
     # The default switch is on 20.48 % of the time
     for wire in wires:
-        duty = logged_wire_values(log, wire, "duty fraction")[-1]
+        duty = wire_values(case, wire, "dutyFraction")[-1]
         print(f"{wire}: duty fraction {duty:.5f}")
         assert abs(duty - DEFAULT_DUTY_FRACTION) < DUTY_TOLERANCE
 
@@ -111,7 +110,7 @@ def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
             temperature = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/temperature")
         except KeyError:
             temperature = DEFAULT_DROPLET_TEMPERATURE
-        added_enthalpy += logged_wire_values(log, wire, "added mass")[-1] * metal.enthalpy(temperature)
+        added_enthalpy += wire_values(case, wire, "addedMass")[-1] * metal.enthalpy(temperature)
     enthalpy_change = end["enthalpy"] - start["enthalpy"]
     energy_error = abs(enthalpy_change - added_enthalpy) / added_enthalpy
     print(f"enthalpy change {enthalpy_change:.4f} J, droplet enthalpy {added_enthalpy:.4f} J: "
@@ -119,7 +118,7 @@ def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
     assert energy_error < ENERGY_TOLERANCE
 
     # Bounded, finite
-    low, high = alpha_bounds(log)
+    low, high = alpha_bounds(case)
     print(f"alpha within [{low:.3e}, {high:.6f}]")
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
     assert finite_fields(time_directories(case)[-1])
@@ -193,7 +192,7 @@ def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
     # Nothing reached a wall: the lowest metal is more than a cell above the floor
     centres_z = read_internal_field(last / "Cz")
     assert centres_z[alpha > 1e-3].min() > 1e-3
-    low, high = alpha_bounds(case / "log.ldnaFoam")
+    low, high = alpha_bounds(case)
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
 
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.balance import evaporation_log
+from ldna.balance import evaporation_table
 from ldna.foamcase import (alpha_bounds, read_balances, read_internal_field, run,
                            run_parallel, time_directories)
 from ldna.foamdict import set_entry
@@ -71,11 +71,11 @@ def saturation_pressure(temperature: float) -> float:
 
 
 def run_one_hot_step(case: Path, entries: str) -> tuple[np.ndarray, tuple[float, ...]]:
-    """Run one step from a uniform SURFACE_TEMPERATURE; the balances and the evaporation log."""
+    """Run one step from a uniform SURFACE_TEMPERATURE; the balances and evaporation's last row."""
     set_entry(case / "0" / "T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
     write_fv_options(case, entries)
     run(case, "ldnaFoam")
-    return read_balances(case / "log.ldnaFoam"), evaporation_log(case / "log.ldnaFoam")[-1]
+    return read_balances(case), tuple(evaporation_table(case)[-1])[1:]
 
 
 def test_hertz_knudsen_rate_heat_and_recoil(laser_slab_case: Path) -> None:
@@ -147,7 +147,7 @@ def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Path) -> None:
 def test_paper_model_rate_and_boiling_point(laser_slab_case: Path) -> None:
     """Eq. 38-40: the superheat evaporates w_e of the metal; the rest is left at T_b."""
     case = laser_slab_case
-    balances, (rate, evaporated, latent, sink) = run_one_hot_step(
+    balances, (rate, evaporated, latent, sink, *_) = run_one_hot_step(
         case, evaporation_entry("paper"))
 
     metal = Metal.from_case(case)
@@ -207,15 +207,14 @@ marangoni
 """)
     run(case, "ldnaFoam")
 
-    log = case / "log.ldnaFoam"
-    low, high = alpha_bounds(log)
-    balances = read_balances(log)
+    low, high = alpha_bounds(case)
+    balances = read_balances(case)
     last = time_directories(case)[-1]
     temperature = read_internal_field(last / "T")
     print(f"{len(balances)} steps to t = {balances['time'][-1]:.4g} s: alpha within "
           f"[{low:.3e}, {high:.9f}], T within [{balances['T_min'].min():.1f}, "
           f"{balances['T_max'].max():.1f}] K, evaporated "
-          f"{evaporation_log(log)[-1][1]:.4e} kg")
+          f"{evaporation_table(case)['evaporatedMass'][-1]:.4e} kg")
     # Ran to the end time: OpenFOAM ends a run when less than half a step is left
     last_step = balances["time"][-1] - balances["time"][-2]
     assert balances["time"][-1] >= 2e-3 - 0.5 * last_step

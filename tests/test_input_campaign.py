@@ -179,7 +179,7 @@ def names_word(name: str, text: str) -> bool:
     return re.search(rf"(?<![A-Za-z0-9]){re.escape(name)}(?![A-Za-z0-9])", text) is not None
 
 
-def classify(entry: Entry, variant: str, returncode: int, output: str, log: Path) -> Outcome:
+def classify(entry: Entry, variant: str, returncode: int, output: str, case: Path) -> Outcome:
     """Named error, legal run or other, with the line that shows it."""
     error_start = output.find("FOAM FATAL")
     if returncode != 0:
@@ -194,8 +194,8 @@ def classify(entry: Entry, variant: str, returncode: int, output: str, log: Path
         return Outcome(entry, variant, "other", "a misspelt key ran with the default")
     if "End" not in output or re.search(r"\b(nan|inf)\b", output, re.I):
         return Outcome(entry, variant, "other", "ran, but not to the end or with NaN/inf")
-    balances = read_balances(log)
-    low, high = alpha_bounds(log)
+    balances = read_balances(case)
+    low, high = alpha_bounds(case)
     finite = len(balances) > 0 and np.all(np.isfinite(balances["T_max"]))
     bounded = (finite and low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
                and balances["T_min"].min() > 0 and balances["T_max"].max() < TEMPERATURE_LIMIT)
@@ -223,7 +223,7 @@ def run_variant(base: Path, index: int, entry: Entry, variant: str) -> Outcome:
     if not output:
         return Outcome(entry, variant, "other",
                        "the edit failed: " + (case / "log.edit").read_text()[-200:])
-    outcome = classify(entry, variant, returncode, output, log)
+    outcome = classify(entry, variant, returncode, output, case)
     if outcome.result != "other":
         shutil.rmtree(case)
     return outcome
@@ -356,5 +356,5 @@ def test_an_error_mid_run_leaves_the_last_written_time_restartable(coarse_templa
     restarted = run(case, "ldnaFoam", log_name="ldnaFoam.restart")
     assert f"Create mesh for time = {last.name}" in restarted.output
     assert "End" in restarted.output
-    balances = read_balances(restarted.log)
+    balances = read_balances(case)
     assert np.all(np.isfinite(balances["T_max"])) and np.all(np.isfinite(balances["metal_mass"]))

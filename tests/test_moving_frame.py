@@ -73,10 +73,10 @@ def test_cold_substrate_moves_at_welding_speed(ldna_case: Path) -> None:
     assert abs(q_in - welding_speed * width * depth) < 1e-3 * q_in
 
     # The metal in the domain stays the same and bounded
-    balances = read_balances(case / "log.ldnaFoam")
+    balances = read_balances(case)
     drift = abs(balances["metal_mass"][-1] - balances["metal_mass"][0]) / balances["metal_mass"][0]
     assert drift < 1e-4
-    low, high = alpha_bounds(case / "log.ldnaFoam")
+    low, high = alpha_bounds(case)
     assert low > -1e-6 and high < 1 + 1e-6
 
 

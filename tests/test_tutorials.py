@@ -78,10 +78,10 @@ def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:
     solver_log = solver_logs[0]
     text = solver_log.read_text()
     assert text.rstrip().endswith("Finalising parallel run") or "\nEnd\n" in text
-    balances = read_balances(solver_log)
+    balances = read_balances(solver_log.parent)
     assert len(balances) > 1
     assert balances["T_min"].min() > 0
-    low, high = alpha_bounds(solver_log)
+    low, high = alpha_bounds(solver_log.parent)
     assert low > -1e-6 and high < 1 + 1e-6
 
 

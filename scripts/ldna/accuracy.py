@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import csv
 import math
-import re
 import shutil
 import time
 from dataclasses import dataclass, field
@@ -29,8 +28,8 @@ from typing import Protocol
 import numpy as np
 
 from . import meshing
-from .foamcase import (copy_case, dictionary_scalar, read_balances, run, run_parallel,
-                       time_directories)
+from .foamcase import (BALANCES, copy_case, dictionary_scalar, latest_run_table, read_balances,
+                       run, run_parallel, time_directories)
 from .foamdict import read_scalars, set_entry
 from .stefan import NeumannSolution, front_position
 
@@ -91,7 +90,7 @@ class LdnaScene:
         last = dict(zip(("time",) + BeadMetrics.FUNCTION_OBJECT_COLUMNS,
                         read_function_object_metrics(case)[-1]))
         values = {name: float(last[name]) for name in self.outputs_meta if name in last}
-        values["metal_mass"] = float(read_balances(case / "log.ldnaFoam")["metal_mass"][-1])
+        values["metal_mass"] = float(read_balances(case)["metal_mass"][-1])
         values["droplet_fraction"] = largest_fraction_in_flight(case)
         return values
 
@@ -189,9 +188,6 @@ class Member:
         return self.wall_time * self.n_procs / ((self.end_time - self.start_time) * 1e3)
 
 
-_STEP = re.compile(r"^Time = ", re.M)
-
-
 @dataclass(frozen=True)
 class StartState:
     """A developed state every member starts from: a reconstructed time of a run."""
@@ -244,30 +240,24 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     scene.prepare(case)
     if start:
         start.map_onto(case)
-    member.cells = _count_cells(case)
+    member.cells = meshing.cell_count(case)
 
     member.n_procs = n_procs
     if n_procs > 1:
         set_entry(case / "system" / "decomposeParDict", "numberOfSubdomains", str(n_procs))
         run(case, "decomposePar -force")
     start = time.perf_counter()
-    result = (run_parallel(case, "ldnaFoam", n_procs) if n_procs > 1
-              else run(case, "ldnaFoam"))
+    if n_procs > 1:
+        run_parallel(case, "ldnaFoam", n_procs)
+    else:
+        run(case, "ldnaFoam")
     member.wall_time = time.perf_counter() - start
     if n_procs > 1:
         run(case, "reconstructPar -latestTime")
-    member.steps = len(_STEP.findall(result.output))
+    # Rows of the run's balance table: the initial state and one per step
+    member.steps = len(latest_run_table(case, *BALANCES)) - 1
     member.outputs = scene.outputs(case)
     return member
-
-
-def _count_cells(case: Path) -> int:
-    """Cells of the mesh, from the note in the owner file's header (ASCII or binary)."""
-    owner = (case / "constant" / "polyMesh" / "owner").read_bytes()[:2000].decode(errors="replace")
-    match = re.search(r"nCells:\s*(\d+)", owner)
-    if not match:
-        raise ValueError(f"{case}: no cell count in constant/polyMesh/owner")
-    return int(match.group(1))
 
 
 @dataclass

@@ -15,30 +15,16 @@ substrate, which would hide any error in the deposit.
 """
 from __future__ import annotations
 
-import math
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from .foamcase import read_balances, read_function_object
+from .foamcase import find_tables, read_balances, read_function_object, read_table
 from .material import Metal
 
 #: The template's function objects of metal volume flow through its patches
 FLOW_FUNCTION_OBJECTS = ("metalFlowIn", "metalFlowOut", "metalFlowAtmosphere")
-
-_WIRE = re.compile(r"dropletSource \S+: wire (\S+) added mass = (\S+) kg, on time = (\S+) s, "
-                   r"duty fraction = (\S+)")
-_EVAPORATION = re.compile(
-    r"^evaporation \S+: mass rate = (\S+) kg/s, evaporated mass = (\S+) kg, "
-    r"latent heat = (\S+) W, heat sink = (\S+) W(?:, recoil force = \((\S+) (\S+) (\S+)\) N)?$",
-    re.M)
-_SOLVE = re.compile(r"Solving for (\S+), Initial residual = (\S+), Final residual = (\S+), "
-                    r"No Iterations (\d+)")
-#: The energy iteration's report of each time step (applications/solvers/ldnaFoam/TEqn.H)
-_ENERGY_CONVERGED = re.compile(r"^Energy: converged in (\d+) iterations", re.M)
-_ENERGY_UNCONVERGED = re.compile(r"^Energy: not converged in \d+ iterations", re.M)
 
 #: OpenFOAM's default maximum number of linear-solver iterations (lduMatrix)
 DEFAULT_MAX_ITER = 1000
@@ -72,29 +58,37 @@ class MassBalance:
         return abs(self.residual) / self.turnover
 
 
-#: Columns of :func:`wire_log`
-WIRE_LOG_COLUMNS = ("added mass", "on time", "duty fraction")
+#: Columns of each wire's rows in :func:`wire_table`
+WIRE_COLUMNS = ("addedMass", "onTime", "dutyFraction")
 
 
-def wire_log(log: Path) -> dict[str, np.ndarray]:
-    """Per wire, per step: added mass [kg], on time [s], duty fraction, as dropletSource logs them."""
-    rows: dict[str, list[tuple[float, ...]]] = {}
-    for match in _WIRE.finditer(Path(log).read_text()):
-        rows.setdefault(match.group(1), []).append(tuple(float(v) for v in match.groups()[1:]))
-    return {wire: np.array(values) for wire, values in rows.items()}
+def wire_table(case: Path) -> dict[str, np.ndarray]:
+    """Per wire of every droplet source, per step: metal added [kg] and time
+    switched on [s] since the start of the run, and the duty fraction, from
+    the sources' tables (postProcessing/<source>/<startTime>/droplets.dat)."""
+    wires: dict[str, np.ndarray] = {}
+    for source in find_tables(case, "droplets"):
+        table = read_table(case, source, "droplets")
+        names = [column.rsplit("_", 1)[0] for column in table.dtype.names[1::len(WIRE_COLUMNS)]]
+        for wire in names:
+            wires[wire] = np.column_stack([table[f"{wire}_{column}"] for column in WIRE_COLUMNS])
+    return wires
 
 
-def evaporation_log(log: Path) -> list[tuple[float, ...]]:
-    """Per step: mass rate, evaporated mass, latent heat, heat sink (and recoil force)."""
-    return [tuple(float(v) for v in m.groups() if v is not None)
-            for m in _EVAPORATION.finditer(Path(log).read_text())]
+def evaporation_table(case: Path) -> np.ndarray | None:
+    """Evaporation's rows per step (``massRate`` [kg/s], ``evaporatedMass`` [kg]
+    since the start of the run, ``latentHeat`` and ``heatSink`` [W],
+    ``recoilForce_x/y/z`` [N]), or None without an evaporation source."""
+    sources = find_tables(case, "evaporation")
+    if len(sources) > 1:
+        raise ValueError(f"{case}: more than one evaporation source: {sources}")
+    return read_table(case, sources[0], "evaporation") if sources else None
 
 
-def metal_mass_balance(case: Path, log_name: str = "ldnaFoam") -> MassBalance:
-    """Mass budget of the run logged in ``case/log.<log_name>``."""
+def metal_mass_balance(case: Path) -> MassBalance:
+    """Mass budget of the run of ``case``, from its tables."""
     case = Path(case)
-    log = case / f"log.{log_name}"
-    balances = read_balances(log)
+    balances = read_balances(case)
     metal = Metal.from_case(case)
     if metal.density_model != "Boussinesq":
         raise ValueError(f"{case}: the flow balance needs the Boussinesq metal "
@@ -112,12 +106,12 @@ def metal_mass_balance(case: Path, log_name: str = "ldnaFoam") -> MassBalance:
         inflow -= metal.reference_density * volume[volume < 0].sum()
         outflow += metal.reference_density * volume[volume > 0].sum()
 
-    evaporation = evaporation_log(log)
+    evaporation = evaporation_table(case)
     return MassBalance(
         start=float(balances["metal_mass"][0]),
         end=float(balances["metal_mass"][-1]),
-        added=float(sum(values[-1, 0] for values in wire_log(log).values())),
-        evaporated=evaporation[-1][1] if evaporation else 0.0,
+        added=float(sum(values[-1, 0] for values in wire_table(case).values())),
+        evaporated=float(evaporation["evaporatedMass"][-1]) if evaporation is not None else 0.0,
         inflow=float(inflow),
         outflow=float(outflow),
     )
@@ -141,20 +135,17 @@ class SolverHealth:
         return (not self.all_finite) or self.max_iterations >= max_iter
 
 
-def solver_health(log: Path) -> SolverHealth:
-    """Iterations and residuals of every linear solve and energy iteration in a solver log."""
-    text = Path(log).read_text()
-    solves = _SOLVE.findall(text)
-    if not solves:
-        raise ValueError(f"{log}: no linear solves logged")
-    finals = [float(final) for _, _, final, _ in solves]
-    initials = [float(initial) for _, initial, _, _ in solves]
-    energy_converged = [int(n) for n in _ENERGY_CONVERGED.findall(text)]
+def solver_health(case: Path) -> SolverHealth:
+    """Iterations and residuals of every linear solve and energy iteration of
+    a run, from the solver's balance table."""
+    balances = read_balances(case)[1:]
+    if balances["linear_solves"].sum() == 0:
+        raise ValueError(f"{case}: no linear solves recorded")
     return SolverHealth(
-        solves=len(solves),
-        max_iterations=max(int(n) for *_, n in solves),
-        worst_final_residual=max(finals),
-        all_finite=all(math.isfinite(v) for v in finals + initials),
-        energy_unconverged=len(_ENERGY_UNCONVERGED.findall(text)),
-        max_energy_iterations=max(energy_converged, default=0),
+        solves=int(balances["linear_solves"].sum()),
+        max_iterations=int(balances["max_linear_iterations"].max()),
+        worst_final_residual=float(balances["max_final_residual"].max()),
+        all_finite=bool(balances["non_finite_solves"].sum() == 0),
+        energy_unconverged=int(balances["energy_unconverged"].sum()),
+        max_energy_iterations=int(balances["energy_iterations"].max()),
     )

@@ -16,7 +16,6 @@ variant does the same steps:
 """
 from __future__ import annotations
 
-import re
 import shutil
 import tempfile
 from dataclasses import dataclass
@@ -24,7 +23,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .foamcase import PROJECT_DIR, copy_case, read_balances, run, run_parallel
+from .foamcase import (PROJECT_DIR, TIME_INFO, copy_case, latest_run_table, read_balances, run,
+                       run_parallel)
 from .foamdict import block_names, keep_blocks, read_scalars, remove_blocks, set_entry
 from .meshing import cell_count, mesh_case
 
@@ -36,7 +36,6 @@ LASER_POWER = 1200.0
 LASER_BEAM_RADIUS = 1e-3
 LASER_MODELS = ("gaussianSurface", "beerLambert", "monteCarlo")
 
-EXECUTION_TIME = re.compile(r"^ExecutionTime = (\S+) s", re.M)
 
 
 @dataclass
@@ -64,11 +63,12 @@ laser
 """
 
 
-def seconds_per_step(log: Path) -> float:
-    """Mean CPU time per step (ExecutionTime) of a solver log, without the first step (start-up)."""
-    times = np.array([float(t) for t in EXECUTION_TIME.findall(log.read_text())])
+def seconds_per_step(case: Path) -> float:
+    """Mean CPU time per step of the case's latest run (OpenFOAM's timeInfo
+    table), without the first step (start-up)."""
+    times = latest_run_table(case, *TIME_INFO)["cpuTime"]
     if len(times) < 3:
-        raise RuntimeError(f"too few steps in {log}")
+        raise RuntimeError(f"too few steps in {case}")
     return float(np.diff(times)[1:].mean())
 
 
@@ -95,7 +95,7 @@ def laser_cost(level: int = 1, steps: int = 20, delta_t: float = 1e-4,
         options = base_options + ("" if variant == "none" else laser_entry(variant, length))
         (case / "constant" / "fvOptions").write_text(options)
         run(case, "ldnaFoam", log_name=f"ldnaFoam.{variant}")
-        costs.append(StepCost(variant, seconds_per_step(case / f"log.ldnaFoam.{variant}"), 0.0))
+        costs.append(StepCost(variant, seconds_per_step(case), 0.0))
 
     reference = costs[0].seconds_per_step
     for cost in costs:
@@ -226,10 +226,25 @@ def _fixed_steps(case: Path, steps: int, delta_t: float) -> None:
     set_entry(control, "writeInterval", "1e3")
 
 
-def _without_function_objects(case: Path) -> None:
+#: The only function object of the timed runs: the CPU time of each step
+TIME_INFO_FUNCTIONS = """
+functions
+{
+    timeInfo
+    {
+        type            timeInfo;
+        libs            ("libutilityFunctionObjects.so");
+        writeControl    timeStep;
+        writeInterval   1;
+    }
+}
+"""
+
+
+def _only_time_info(case: Path) -> None:
     control = case / "system" / "controlDict"
     remove_blocks(control, ["functions"])
-    control.write_text(control.read_text() + "\nfunctions {}\n")
+    control.write_text(control.read_text() + TIME_INFO_FUNCTIONS)
 
 
 def _compressible_inter_foam_case(scene: Path, destination: Path) -> Path:
@@ -262,7 +277,7 @@ def _time_per_step(case: Path, command: str, log_name: str, n_procs: int = 1,
             run_parallel(case, command, n_procs, log_name=log_name)
         else:
             run(case, command, log_name=log_name)
-        times.append(seconds_per_step(case / f"log.{log_name}"))
+        times.append(seconds_per_step(case))
     return min(times)
 
 
@@ -276,7 +291,7 @@ def solver_costs(level: int = 0, steps: int = 40, delta_t: float = 2e-4, n_procs
     # walls' heat-loss condition: adiabatic walls in every variant
     run(scene, "foamDictionary -entry boundaryField/substrateWalls -set "
                "'{ type zeroGradient; }' 0/T", log_name="foamDictionary")
-    _without_function_objects(scene)
+    _only_time_info(scene)
     mesh_case(scene)
     run(scene, "setFields")
     full_options = (scene / "constant" / "fvOptions").read_text()
@@ -287,7 +302,7 @@ def solver_costs(level: int = 0, steps: int = 40, delta_t: float = 2e-4, n_procs
     shutil.copytree(scene / "constant" / "polyMesh", adaptive / "constant" / "polyMesh")
     set_entry(adaptive / "system" / "controlDict", "endTime", f"{steps * 10 * delta_t:g}")
     run(adaptive, "ldnaFoam")
-    times = read_balances(adaptive / "log.ldnaFoam")["time"]
+    times = read_balances(adaptive)["time"]
     template_delta_t = float(np.diff(times)[len(times) // 2:].mean())
 
     _fixed_steps(scene, steps, delta_t)

@@ -124,44 +124,149 @@ def write_internal_field(path: Path, values: np.ndarray) -> None:
     path.write_text(text)
 
 
-_BALANCE = re.compile(
-    r"^Balance at t = (\S+): metal mass = (\S+) kg, total enthalpy = (\S+) J, "
-    r"min/max T = (\S+) / (\S+) K, liquid metal volume = (\S+) m3",
-    re.M,
-)
+def _table_file(directory: Path, file: str) -> Path | None:
+    """The newest ``<file>.dat`` of one start-time directory of a table.
 
-#: Columns of :func:`read_balances`
-BALANCE_COLUMNS = ("time", "metal_mass", "enthalpy", "T_min", "T_max", "liquid_volume")
-
-
-def read_balances(log: Path) -> np.ndarray:
-    """Domain totals an ldnaFoam log reports once per time step.
-
-    A structured array with the fields of :data:`BALANCE_COLUMNS`: time [s],
-    metal mass [kg], total enthalpy [J], min and max temperature [K] and
-    liquid metal volume [m3].
+    OpenFOAM's writeFile names the table of a second run from the same start
+    time ``<file>_<time>.dat``: the newest file is the latest run's.
     """
-    rows = [tuple(float(v) for v in m.groups()) for m in _BALANCE.finditer(Path(log).read_text())]
-    return np.array(rows, dtype=[(name, float) for name in BALANCE_COLUMNS])
+    files = [path for path in directory.glob(f"{file}*.dat") if _is_table_of(path, file)]
+    return max(files, key=lambda path: path.stat().st_mtime) if files else None
 
 
-_ALPHA_BOUNDS = re.compile(r"Min\(alpha\.\w+\) = (\S+)\s+Max\(alpha\.\w+\) = (\S+)")
+def _is_table_of(path: Path, file: str) -> bool:
+    """Whether ``path`` is ``<file>.dat`` or writeFile's ``<file>_<startTime>.dat``."""
+    return path.stem in (file, f"{file}_{path.parent.name}")
 
 
-def alpha_bounds(log: Path) -> tuple[float, float]:
-    """Lowest and highest metal fraction reported anywhere in a solver log."""
-    pairs = np.array(_ALPHA_BOUNDS.findall(Path(log).read_text()), dtype=float)
-    return float(pairs[:, 0].min()), float(pairs[:, 1].max())
+def read_table(case: Path, name: str, file: str) -> np.ndarray:
+    """Rows of a table written with OpenFOAM's ``functionObjects::writeFile``.
+
+    ``postProcessing/<name>/<startTime>/<file>.dat`` of every start time of
+    the runs (a restart writes a new start-time directory), as a structured
+    array whose fields are the table's column names (its last comment line;
+    the first is ``Time``).  Rows of an earlier run at or after a later run's
+    start time are dropped: the later run replaced them.
+    """
+    directories = sorted((Path(case) / "postProcessing" / name).glob("*"),
+                         key=lambda path: float(path.name) if _is_number(path.name) else -1.0)
+    columns: list[str] | None = None
+    blocks = []
+    for directory in directories:
+        path = _table_file(directory, file) if _is_number(directory.name) else None
+        if path is None:
+            continue
+        rows = _parse_table(path)
+        columns = list(rows.dtype.names)
+        rows = np.column_stack([rows[column] for column in columns])
+        start = float(directory.name)
+        blocks = [block[block[:, 0] < start] for block in blocks]
+        blocks.append(rows)
+    if columns is None:
+        raise FileNotFoundError(f"no postProcessing/{name}/*/{file}.dat in {case}")
+    table = np.vstack(blocks)
+    return np.rec.fromarrays(table.T, names=columns)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _parse_table(path: Path) -> np.ndarray:
+    """One writeFile table as a structured array (a line still being written is left out)."""
+    lines = path.read_text().splitlines()
+    header = [line for line in lines if line.startswith("#")]
+    columns = header[-1].lstrip("#").split()
+    rows = [line.split() for line in lines if line and not line.startswith("#")]
+    rows = [row for row in rows if len(row) == len(columns)]
+    table = np.array(rows, dtype=float).reshape(-1, len(columns))
+    return np.rec.fromarrays(table.T, names=columns)
+
+
+def table_files(case: Path, name: str, file: str) -> list[Path]:
+    """Every ``<file>.dat`` of ``postProcessing/<name>``: one per run, oldest first."""
+    files = [path for path in (Path(case) / "postProcessing" / name).glob(f"*/{file}*.dat")
+             if _is_table_of(path, file)]
+    return sorted(files, key=lambda path: path.stat().st_mtime)
+
+
+def latest_run_table(case: Path, name: str, file: str) -> np.ndarray:
+    """The table ``<file>`` of the case's latest run (see :func:`read_table`)."""
+    files = table_files(case, name, file)
+    if not files:
+        raise FileNotFoundError(f"no postProcessing/{name}/*/{file}.dat in {case}")
+    return _parse_table(files[-1])
+
+
+#: OpenFOAM's timeInfo function object (cumulative CPU and clock time per
+#: step), which the template and the benchmark cases run
+TIME_INFO = ("timeInfo", "timeInfo")
+
+
+def cpu_seconds(case: Path) -> float:
+    """CPU time of the master rank [s] of all runs of the case (timeInfo)."""
+    files = table_files(case, *TIME_INFO)
+    if not files:
+        raise FileNotFoundError(f"no postProcessing/timeInfo in {case}")
+    return float(sum(_parse_table(path)["cpuTime"][-1] for path in files))
+
+
+def find_tables(case: Path, file: str) -> list[str]:
+    """Names of the postProcessing directories holding a ``<file>.dat`` table."""
+    return sorted({path.parents[1].name
+                   for path in (Path(case) / "postProcessing").glob(f"*/*/{file}.dat")})
+
+
+#: The solver's table of domain totals and solver health, one row per step
+#: (applications/solvers/ldnaFoam/domainBalances.H)
+BALANCES = ("balances", "balances")
+
+
+#: The balance table's columns (C++ names) and their names here
+BALANCE_COLUMNS = {
+    "Time": "time", "metalMass": "metal_mass", "totalEnthalpy": "enthalpy",
+    "Tmin": "T_min", "Tmax": "T_max", "liquidMetalVolume": "liquid_volume",
+    "alphaMin": "alpha_min", "alphaMax": "alpha_max",
+    "energyIterations": "energy_iterations", "energyUnconverged": "energy_unconverged",
+    "linearSolves": "linear_solves", "maxLinearIterations": "max_linear_iterations",
+    "maxFinalResidual": "max_final_residual", "nonFiniteSolves": "non_finite_solves",
+}
+
+
+def read_balances(case: Path) -> np.ndarray:
+    """Domain totals and solver health of an ldnaFoam run, one row per time step.
+
+    A structured array (the first row is the initial state) with the fields
+    of :data:`BALANCE_COLUMNS`: time [s], metal mass [kg], total enthalpy
+    [J], min and max temperature [K], liquid metal volume [m3], min and max
+    metal fraction, the step's most energy iterations and unconverged energy
+    solves, its linear solves, their most iterations and largest final
+    residual, and the solves with non-finite residuals.
+    """
+    table = read_table(case, *BALANCES)
+    return np.rec.fromarrays([table[column] for column in BALANCE_COLUMNS],
+                             names=list(BALANCE_COLUMNS.values()))
+
+
+def alpha_bounds(case: Path) -> tuple[float, float]:
+    """Lowest and highest metal fraction of any time step of a run."""
+    balances = read_balances(case)
+    return float(balances["alpha_min"].min()), float(balances["alpha_max"].max())
 
 
 def read_function_object(case: Path, name: str, file: str) -> np.ndarray:
-    """Numeric rows of a function object's output, all start times joined."""
-    rows = []
-    for path in sorted((Path(case) / "postProcessing" / name).glob(f"*/{file}")):
-        for line in path.read_text().splitlines():
-            if line and not line.startswith("#"):
-                rows.append([float(v) for v in line.split()])
-    return np.array(rows)
+    """Numeric rows (time first) of a function object's table ``file`` (e.g.
+    ``surfaceFieldValue.dat``), all start times joined (:func:`read_table`);
+    no rows when the function object wrote none."""
+    try:
+        table = read_table(case, name, file.removesuffix(".dat"))
+    except FileNotFoundError:
+        return np.empty((0, 0))
+    return np.column_stack([table[column] for column in table.dtype.names])
 
 
 def dictionary_value(case: Path, file: str, entry: str) -> str:

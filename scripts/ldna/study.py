@@ -26,7 +26,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .foamcase import ENV_SCRIPT, copy_case, dictionary_value, run
+from .foamcase import BALANCES, ENV_SCRIPT, copy_case, dictionary_value, latest_run_table, run
 from .foamdict import set_entry
 from .post import BeadMetrics, read_function_object_metrics
 
@@ -113,19 +113,13 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
     return members
 
 
-def _simulated_time(log: Path) -> float:
-    """Latest ``Time = `` of a solver log (0 before it starts)."""
-    if not log.exists():
-        return 0.0
-    with open(log, "rb") as stream:
-        stream.seek(0, 2)
-        stream.seek(max(0, stream.tell() - 20000))
-        tail = stream.read().decode(errors="replace")
-    times = [line.split("=", 1)[1] for line in tail.splitlines() if line.startswith("Time = ")]
+def _simulated_time(case: Path) -> float:
+    """Latest time of the solver's balance table (0 before the run starts)."""
     try:
-        return float(times[-1]) if times else 0.0
-    except ValueError:
+        times = latest_run_table(case, *BALANCES)["Time"]
+    except (FileNotFoundError, IndexError, ValueError):
         return 0.0
+    return float(times[-1]) if len(times) else 0.0
 
 
 def _progress(done: float, total: int, label: str, started: float) -> None:
@@ -148,7 +142,7 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
         process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
                                    stdout=log, stderr=subprocess.STDOUT)
         while process.poll() is None:
-            fraction = min(1.0, _simulated_time(member.path / "log.ldnaFoam") / end_time)
+            fraction = min(1.0, _simulated_time(member.path) / end_time)
             _progress(index + fraction, total, label, started)
             time.sleep(POLL_SECONDS)
     member.wall_time = time.time() - begin

@@ -30,13 +30,13 @@ case's last time (``ldna post``: metrics and pictures), and writes
 from __future__ import annotations
 
 import json
-import re
 import shutil
 from pathlib import Path
 
 import numpy as np
 
 from . import post
+from .foamcase import cpu_seconds
 from .meshing import cell_count
 
 #: Window of the bead's mean section [s]: one ripple period of the
@@ -46,9 +46,6 @@ AVERAGING_WINDOW = 0.5
 STEADY_TOLERANCE = 0.01
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
 BEAD_AREA_COLUMN = 1 + post.BeadMetrics.FUNCTION_OBJECT_COLUMNS.index("bead_area")
-
-_CPU = re.compile(r"^ExecutionTime = (\S+) s", re.M)
-
 
 def bead_area_history(case: Path) -> tuple[np.ndarray, np.ndarray]:
     """Times [s] and bead areas [m2] at the fixed section, from the function object."""
@@ -90,13 +87,12 @@ def ranks(case: Path) -> int:
 
 
 def core_hours(case: Path) -> float:
-    """CPU time of the solver times its ranks [h], from the log's last time line.
+    """CPU time of the solver times its ranks [h], over all runs of the case.
 
-    CPU time (OpenFOAM's ExecutionTime, of the master rank), not wall time,
+    CPU time of the master rank (OpenFOAM's timeInfo table), not wall time,
     so that other work on the machine does not count.
     """
-    cpu = _CPU.findall((Path(case) / "log.ldnaFoam").read_text())
-    return float(cpu[-1]) * ranks(case) / 3600 if cpu else float("nan")
+    return cpu_seconds(case) * ranks(case) / 3600
 
 
 def plot_history(times: np.ndarray, areas: np.ndarray, expected: float, means: dict,

@@ -36,6 +36,7 @@ Description
 #include "localEulerDdtScheme.H"
 #include "gaussConvectionScheme.H"
 #include "metalFractionLimiter.H"
+#include "domainBalances.H"
 #include "subCycle.H"
 #include "metalGasMixture.H"
 #include "pimpleControl.H"
@@ -76,7 +77,7 @@ int main(int argc, char *argv[])
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-    #include "reportBalances.H"
+    balances.write(mixture, T, alpha1);
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -127,7 +128,7 @@ int main(int argc, char *argv[])
         #include "metalVolumeCorrection.H"
         #include "insertMetal.H"
         endProfiling(insertion);
-        #include "reportBalances.H"
+        balances.write(mixture, T, alpha1);
         #include "write.H"
 
         runTime.printExecutionTime(Info);

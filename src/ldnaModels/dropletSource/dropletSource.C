@@ -640,17 +640,61 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
 }
 
 
-void Foam::fv::dropletSource::logWire(const wireStream& wire) const
+void Foam::fv::dropletSource::writeMassFileHeader()
 {
-    if (log_)
+    if (massFile_.writeToFile())
     {
-        const Time& time = mesh_.time();
-        const scalar elapsed = time.value() - time.startTime().value();
-        Info<< type() << ' ' << name_ << ": wire " << wire.name
-            << " added mass = " << wire.addedMass
-            << " kg, on time = " << wire.onTime
-            << " s, duty fraction = "
-            << (elapsed > 0 ? wire.onTime/elapsed : 0) << endl;
+        OFstream& os = massFile_.file();
+        massFile_.writeHeader
+        (
+            os,
+            "Per wire: metal added [kg] and time switched on [s] since the"
+            " start of the run, and the switch's duty fraction"
+        );
+        massFile_.writeCommented(os, "Time");
+        for (const wireStream& wire : wires_)
+        {
+            for (const char* column : {"addedMass", "onTime", "dutyFraction"})
+            {
+                massFile_.writeTabbed(os, wire.name + '_' + column);
+            }
+        }
+        os  << endl;
+    }
+}
+
+
+void Foam::fv::dropletSource::report()
+{
+    const Time& time = mesh_.time();
+    const scalar elapsed = time.value() - time.startTime().value();
+
+    const bool toFile = massFile_.writeToFile();
+    if (toFile)
+    {
+        massFile_.writeCurrentTime(massFile_.file());
+    }
+
+    for (const wireStream& wire : wires_)
+    {
+        const scalar duty = elapsed > 0 ? wire.onTime/elapsed : 0;
+        if (log_)
+        {
+            Info<< type() << ' ' << name_ << ": wire " << wire.name
+                << " added mass = " << wire.addedMass
+                << " kg, on time = " << wire.onTime
+                << " s, duty fraction = " << duty << endl;
+        }
+        if (toFile)
+        {
+            massFile_.file()
+                << tab << wire.addedMass << tab << wire.onTime << tab << duty;
+        }
+    }
+
+    if (toFile)
+    {
+        massFile_.file() << endl;
     }
 }
 
@@ -776,9 +820,9 @@ void Foam::fv::dropletSource::update()
             wire.addedMass += mass;
             wire.onTime += on;
         }
-
-        logWire(wire);
     }
+
+    report();
 }
 
 
@@ -807,9 +851,11 @@ Foam::fv::dropletSource::dropletSource
     timeIndex_(-1),
     massSource_(mesh.nCells(), Zero),
     enthalpySource_(mesh.nCells(), Zero),
-    momentumSource_(mesh.nCells(), Zero)
+    momentumSource_(mesh.nCells(), Zero),
+    massFile_(mesh, sourceName, "droplets", dictionary())
 {
     readCoeffs();
+    writeMassFileHeader();
 }
 
 
@@ -905,9 +951,9 @@ bool Foam::fv::dropletSource::insert
             inserted = true;
         }
         wire.onTime += switchOnTime(wire.frequency, t0, t1);
-
-        logWire(wire);
     }
+
+    report();
 
     return inserted;
 }

@@ -250,19 +250,30 @@ void Foam::fv::evaporation::update()
 
     const scalar massRate = gSum(massRate_*mesh_.V());
     evaporatedMass_ += massRate*mesh_.time().deltaTValue();
+    const scalar heatSink = gSum(heatSink_*mesh_.V());
+    reduce(recoilForce, sumOp<vector>());
 
     if (log_)
     {
         Info<< type() << ' ' << name_ << ": mass rate = " << massRate
             << " kg/s, evaporated mass = " << evaporatedMass_
             << " kg, latent heat = " << massRate*latentHeat_
-            << " W, heat sink = " << gSum(heatSink_*mesh_.V()) << " W";
+            << " W, heat sink = " << heatSink << " W";
         if (recoilPressure_)
         {
-            Info<< ", recoil force = "
-                << returnReduce(recoilForce, sumOp<vector>()) << " N";
+            Info<< ", recoil force = " << recoilForce << " N";
         }
         Info<< endl;
+    }
+
+    if (rateFile_.writeToFile())
+    {
+        OFstream& os = rateFile_.file();
+        rateFile_.writeCurrentTime(os);
+        os  << tab << massRate << tab << evaporatedMass_
+            << tab << massRate*latentHeat_ << tab << heatSink
+            << tab << recoilForce.x() << tab << recoilForce.y()
+            << tab << recoilForce.z() << endl;
     }
 }
 
@@ -287,9 +298,32 @@ Foam::fv::evaporation::evaporation
     recoilPressure_(false),
     log_(true),
     updatedTimeIndex_(-1),
-    evaporatedMass_(0)
+    evaporatedMass_(0),
+    rateFile_(mesh, name, "evaporation", dictionary())
 {
     readCoeffs();
+
+    if (rateFile_.writeToFile())
+    {
+        OFstream& os = rateFile_.file();
+        rateFile_.writeHeader
+        (
+            os,
+            "Evaporated mass rate [kg/s], evaporated mass since the start of"
+            " the run [kg], latent heat [W], heat sink [W], recoil force [N]"
+        );
+        rateFile_.writeCommented(os, "Time");
+        for
+        (
+            const char* column
+          : {"massRate", "evaporatedMass", "latentHeat", "heatSink",
+             "recoilForce_x", "recoilForce_y", "recoilForce_z"}
+        )
+        {
+            rateFile_.writeTabbed(os, column);
+        }
+        os  << endl;
+    }
 }
 
 

@@ -13,7 +13,6 @@ and the heat-loss model against the Stefan-Boltzmann law.
 from __future__ import annotations
 
 import math
-import re
 import shutil
 from pathlib import Path
 from typing import Callable
@@ -21,8 +20,8 @@ from typing import Callable
 import numpy as np
 import pytest
 
-from ldna.foamcase import (read_function_object, read_internal_field, run, run_parallel,
-                           time_directories, write_internal_field)
+from ldna.foamcase import (read_function_object, read_internal_field, read_table, run,
+                           run_parallel, time_directories, write_internal_field)
 from ldna.foamdict import set_entry
 
 from conftest import TEST_CASES
@@ -517,7 +516,7 @@ surfaceLosses
 """)
     run(case, "ldnaFoam")
 
-    radiated = float(re.findall(r"radiated = (\S+) W", (case / "log.ldnaFoam").read_text())[0])
+    radiated = float(read_table(case, "surfaceLosses", "losses")["radiated"][0])
     stefan_boltzmann = 5.670374419e-8
     expected = emissivity * stefan_boltzmann * (temperature**4 - ambient**4) * SURFACE_AREA
     print(f"radiated {radiated:.5f} W, eps sigma (T^4 - T0^4) A = {expected:.5f} W")

@@ -11,9 +11,7 @@ test_cluster.
 from __future__ import annotations
 
 import json
-
 import os
-import re
 import signal
 import subprocess
 import time
@@ -21,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import PROJECT_DIR, dictionary_scalar, time_directories
+from ldna.foamcase import PROJECT_DIR, dictionary_scalar, read_balances, time_directories
 from userpath import SHELLS, run_as_user, user_command
 
 pytestmark = pytest.mark.user_path
@@ -52,8 +50,8 @@ def last_reconstructed_time(case: Path) -> float:
 
 
 def last_solved_time(case: Path) -> float:
-    """The time of the solver's last step, from its log."""
-    return float(re.findall(r"^Time = (\S+)$", (case / "log.ldnaFoam").read_text(), re.M)[-1])
+    """The time of the solver's last step, from its balance table."""
+    return float(read_balances(case)["time"][-1])
 
 
 @pytest.mark.parametrize("shell", list(SHELLS))

@@ -83,9 +83,25 @@ Foam::fv::interfaceHeatLoss::interfaceHeatLoss
     ambientTemperature_(0),
     log_(true),
     loggedTimeIndex_(-1),
+    lossFile_(mesh, name, "losses", dictionary()),
     deltaEventNo_(-1)
 {
     readCoeffs();
+
+    if (lossFile_.writeToFile())
+    {
+        OFstream& os = lossFile_.file();
+        lossFile_.writeHeader
+        (
+            os,
+            "Power lost by the metal surface at the first energy iteration"
+            " of the step [W]"
+        );
+        lossFile_.writeCommented(os, "Time");
+        lossFile_.writeTabbed(os, "radiated");
+        lossFile_.writeTabbed(os, "convected");
+        os  << endl;
+    }
 }
 
 
@@ -150,13 +166,23 @@ void Foam::fv::interfaceHeatLoss::addSup
     eqn -= explicitPart;
     eqn -= fvm::Sp(slope, T);
 
-    if (log_ && loggedTimeIndex_ != mesh_.time().timeIndex())
+    // At the first energy iteration of each step
+    if (loggedTimeIndex_ != mesh_.time().timeIndex())
     {
         loggedTimeIndex_ = mesh_.time().timeIndex();
-        Info<< type() << ' ' << name_ << ": radiated = "
-            << returnReduce(radiated, sumOp<scalar>())
-            << " W, convected = " << returnReduce(convected, sumOp<scalar>())
-            << " W" << endl;
+        reduce(radiated, sumOp<scalar>());
+        reduce(convected, sumOp<scalar>());
+        if (log_)
+        {
+            Info<< type() << ' ' << name_ << ": radiated = " << radiated
+                << " W, convected = " << convected << " W" << endl;
+        }
+        if (lossFile_.writeToFile())
+        {
+            OFstream& os = lossFile_.file();
+            lossFile_.writeCurrentTime(os);
+            os  << tab << radiated << tab << convected << endl;
+        }
     }
 }
 

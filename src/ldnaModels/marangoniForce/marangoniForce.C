@@ -79,7 +79,7 @@ Foam::tmp<Foam::vectorField> Foam::fv::marangoniForce::force()
         }
     }
 
-    if (log_ && loggedTimeIndex_ != mesh_.time().timeIndex())
+    if (loggedTimeIndex_ != mesh_.time().timeIndex())
     {
         loggedTimeIndex_ = mesh_.time().timeIndex();
 
@@ -93,9 +93,22 @@ Foam::tmp<Foam::vectorField> Foam::fv::marangoniForce::force()
                 maxStress = max(maxStress, mag(f[celli])/delta[celli]);
             }
         }
-        Info<< type() << ' ' << name_ << ": total force = "
-            << gSum(f*mesh_.V()) << " N, max tangential stress = "
-            << returnReduce(maxStress, maxOp<scalar>()) << " N/m2" << endl;
+        reduce(maxStress, maxOp<scalar>());
+        const vector total = gSum(f*mesh_.V());
+
+        if (log_)
+        {
+            Info<< type() << ' ' << name_ << ": total force = " << total
+                << " N, max tangential stress = " << maxStress << " N/m2"
+                << endl;
+        }
+        if (forceFile_.writeToFile())
+        {
+            OFstream& os = forceFile_.file();
+            forceFile_.writeCurrentTime(os);
+            os  << tab << total.x() << tab << total.y() << tab << total.z()
+                << tab << maxStress << endl;
+        }
     }
 
     return tf;
@@ -114,9 +127,31 @@ Foam::fv::marangoniForce::marangoniForce
 :
     option(name, modelType, dict, mesh),
     log_(true),
-    loggedTimeIndex_(-1)
+    loggedTimeIndex_(-1),
+    forceFile_(mesh, name, "force", dictionary())
 {
     readCoeffs();
+
+    if (forceFile_.writeToFile())
+    {
+        OFstream& os = forceFile_.file();
+        forceFile_.writeHeader
+        (
+            os,
+            "Marangoni force on the metal surface [N] and largest tangential"
+            " stress [N/m2]"
+        );
+        forceFile_.writeCommented(os, "Time");
+        for
+        (
+            const char* column
+          : {"force_x", "force_y", "force_z", "maxTangentialStress"}
+        )
+        {
+            forceFile_.writeTabbed(os, column);
+        }
+        os  << endl;
+    }
 }
 
 

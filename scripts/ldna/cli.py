@@ -77,7 +77,8 @@ def _accuracy(args: argparse.Namespace) -> int:
 def _bead_report(args: argparse.Namespace) -> int:
     from . import validation
 
-    figures = validation.bead_report(Path(args.case), Path(args.output))
+    figures = validation.bead_report(Path(args.case), Path(args.output), args.section,
+                                     args.cpu_seconds)
     print(json.dumps(figures, indent=2))
     return 0
 
@@ -270,6 +271,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     report.add_argument("case", type=_case, help="case directory")
     report.add_argument("output", help="folder of the report")
+    report.add_argument("--section", default="meltPoolMetrics",
+                        help="the meltPoolMetrics function object whose section judges the bead "
+                             "(default: meltPoolMetrics)")
+    report.add_argument("--cpu-seconds", type=float, default=None,
+                        help="the solver's CPU time on its master rank [s], for a run "
+                             "without the timeInfo table (default: from postProcessing/timeInfo)")
     report.set_defaults(func=_bead_report)
 
     post.add_argument("--json", action="store_true",

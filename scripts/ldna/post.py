@@ -262,12 +262,12 @@ def bead_not_yet_there(arrival: float | None, time: float, section: float) -> st
             "in system/controlDict).")
 
 
-def configured_bead_section(case: Path) -> float | None:
-    """The bead section [m] the case's meltPoolMetrics function object uses, if any."""
+def configured_bead_section(case: Path, name: str = "meltPoolMetrics") -> float | None:
+    """The bead section [m] of the case's meltPoolMetrics function object ``name``, if any."""
     from .foamcase import dictionary_scalar
 
     try:
-        return dictionary_scalar(case, "system/controlDict", "functions/meltPoolMetrics/beadSection")
+        return dictionary_scalar(case, "system/controlDict", f"functions/{name}/beadSection")
     except KeyError:
         return None
 

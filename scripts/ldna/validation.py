@@ -47,9 +47,11 @@ STEADY_TOLERANCE = 0.01
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
 BEAD_AREA_COLUMN = 1 + post.BeadMetrics.FUNCTION_OBJECT_COLUMNS.index("bead_area")
 
-def bead_area_history(case: Path) -> tuple[np.ndarray, np.ndarray]:
-    """Times [s] and bead areas [m2] at the fixed section, from the function object."""
-    table = post.read_function_object_metrics(case)
+def bead_area_history(case: Path, section: str = "meltPoolMetrics"
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """Times [s] and bead areas [m2] at the fixed section of the meltPoolMetrics
+    function object ``section``."""
+    table = post.read_function_object_metrics(case, section)
     return table[:, 0], table[:, BEAD_AREA_COLUMN]
 
 
@@ -86,13 +88,15 @@ def ranks(case: Path) -> int:
     return max(1, len(list(Path(case).glob("processor[0-9]*"))))
 
 
-def core_hours(case: Path) -> float:
+def core_hours(case: Path, master_cpu_seconds: float | None = None) -> float:
     """CPU time of the solver times its ranks [h], over all runs of the case.
 
-    CPU time of the master rank (OpenFOAM's timeInfo table), not wall time,
-    so that other work on the machine does not count.
+    CPU time of the master rank (OpenFOAM's timeInfo table, or
+    ``master_cpu_seconds`` for a run set up without it), not wall time, so
+    that other work on the machine does not count.
     """
-    return cpu_seconds(case) * ranks(case) / 3600
+    seconds = cpu_seconds(case) if master_cpu_seconds is None else master_cpu_seconds
+    return seconds * ranks(case) / 3600
 
 
 def plot_history(times: np.ndarray, areas: np.ndarray, expected: float, means: dict,
@@ -148,20 +152,30 @@ def substrate_section(case: Path) -> float:
                    * dictionary_scalar(case, parameters, "width"))
 
 
-def bead_report(case: Path, output: Path) -> dict:
-    """Write bead.json, bead_area.png and the pictures of ``case`` into ``output``."""
+def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
+                master_cpu_seconds: float | None = None) -> dict:
+    """Write bead.json, bead_area.png and the pictures of ``case`` into ``output``.
+
+    The bead is judged at the section of the meltPoolMetrics function object
+    ``section`` (a case may measure several sections behind the pool).
+    ``master_cpu_seconds`` gives the solver's CPU time for a run without the
+    timeInfo table.
+    """
+    hours = core_hours(case, master_cpu_seconds)
     case, output = Path(case), Path(output)
     output.mkdir(parents=True, exist_ok=True)
-    result, pictures, time = post.post_process(case, output / "pictures")
+    result, pictures, time = post.post_process(
+        case, output / "pictures", bead_section=post.configured_bead_section(case, section))
     figures = post.summary(case, result, time)
-    times, areas = bead_area_history(case)
+    times, areas = bead_area_history(case, section)
     means = steadiness(times, areas)
     figures.update({
+        "section_function_object": section,
         "end_time_s": float(times[-1]),
         "cells": cell_count(case),
         "n_procs": ranks(case),
-        "core_hours": core_hours(case),
-        "core_hours_per_simulated_s": core_hours(case) / float(times[-1]),
+        "core_hours": hours,
+        "core_hours_per_simulated_s": hours / float(times[-1]),
         "averaging_window_s": AVERAGING_WINDOW,
         "mean_bead_area_mm2": 1e6 * means["mean"],
         "previous_mean_bead_area_mm2": 1e6 * means["previous_mean"],

@@ -37,6 +37,7 @@ Description
 #include "gaussConvectionScheme.H"
 #include "metalFractionLimiter.H"
 #include "domainBalances.H"
+#include "metalSources.H"
 #include "subCycle.H"
 #include "metalGasMixture.H"
 #include "pimpleControl.H"
@@ -102,7 +103,7 @@ int main(int argc, char *argv[])
         {
             // Each stage is timed when controlDict has profiling active
             addProfiling(alpha, "ldnaFoam.alpha");
-            #include "metalMassSource.H"
+            metal.collect(fvOptions, rho1, alpha1);
             #include "alphaControls.H"
             #include "alphaEqnSubCycle.H"
             endProfiling(alpha);
@@ -125,7 +126,7 @@ int main(int argc, char *argv[])
         }
 
         addProfiling(insertion, "ldnaFoam.insertMetal");
-        #include "metalVolumeCorrection.H"
+        metal.endStep(rho1, mixture.h1());
         #include "insertMetal.H"
         endProfiling(insertion);
         balances.write(mixture, T, alpha1);

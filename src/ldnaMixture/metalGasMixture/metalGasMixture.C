@@ -64,38 +64,6 @@ bool Foam::metalGasMixture::readBoussinesq
 }
 
 
-Foam::autoPtr<Foam::temperatureTable>
-Foam::metalGasMixture::readFunction
-(
-    const dictionary& dict,
-    const word& entryName,
-    const scalar T0,
-    const scalar T1,
-    const scalar maxValue,
-    const bool withIntegral
-) const
-{
-    autoPtr<Function1<scalar>> f(Function1<scalar>::New(entryName, dict));
-
-    // Sample the range finely enough to catch a sign change of a
-    // low-order polynomial or a table entry
-    const label nSamples = 200;
-    for (label i = 0; i <= nSamples; ++i)
-    {
-        const scalar T = T0 + (T1 - T0)*i/nSamples;
-        ldna::checkValue
-        (
-            dict, entryName, f->value(T),
-            ldna::interval::open(0, maxValue),
-            "at T = " + Foam::name(T) + " K of [" + Foam::name(T0) + ", "
-          + Foam::name(T1) + "] K"
-        );
-    }
-
-    return autoPtr<temperatureTable>::New(std::move(f), T0, T1, withIntegral);
-}
-
-
 void Foam::metalGasMixture::readCoeffs()
 {
     using ldna::interval;
@@ -140,58 +108,10 @@ void Foam::metalGasMixture::readCoeffs()
         metal, "variable", "Boussinesq", "referenceDensity", "kg/m3",
         limits::density, referenceDensity_
     );
-
-    Tsolidus_ = ldna::getChecked<scalar>
+    metal_.reset
     (
-        metal, "solidus", interval::open(0, limits::temperature)
+        new metalProperties(metal, propertyCheckTmin, propertyCheckTmax, Tref)
     );
-    Tliquidus_ = metal.get<scalar>("liquidus");
-    ldna::checkValue
-    (
-        metal, "liquidus", Tliquidus_,
-        interval::open(Tsolidus_, limits::temperature),
-        "above the solidus: the latent heat is released over the mushy range"
-    );
-    latentHeat_ = ldna::getChecked<scalar>
-    (
-        metal, "latentHeat", interval::closed(0, limits::latentHeat)
-    );
-
-    const scalar Ts = Tsolidus_;
-    const scalar Tl = Tliquidus_;
-    const scalar Tmin = propertyCheckTmin;
-    const scalar Tmax = propertyCheckTmax;
-
-    // Solid and liquid property functions, each on its range of use
-    auto readPhases = [&]
-    (
-        const word& property,
-        const scalar maxValue,
-        const bool withIntegral = false
-    )
-    {
-        const dictionary& dict = metal.subDict(property);
-        ldna::checkKeys(dict, {"solid", "liquid"});
-        return std::make_pair
-        (
-            readFunction(dict, "solid", Tmin, Ts, maxValue, withIntegral),
-            readFunction(dict, "liquid", Tl, Tmax, maxValue, withIntegral)
-        );
-    };
-
-    auto rho = readPhases("rho", limits::density);
-    rhoSolid_ = std::move(rho.first);
-    rhoLiquid_ = std::move(rho.second);
-
-    auto Cp = readPhases("Cp", limits::specificHeat, true);
-    CpSolid_ = std::move(Cp.first);
-    CpLiquid_ = std::move(Cp.second);
-
-    auto kappa = readPhases("kappa", limits::conductivity);
-    kappaSolid_ = std::move(kappa.first);
-    kappaLiquid_ = std::move(kappa.second);
-
-    muLiquid_ = readFunction(metal, "mu", Tl, Tmax, limits::viscosity);
 
     const dictionary& gas = subDict(phase2Name());
     ldna::checkKeys
@@ -200,37 +120,15 @@ void Foam::metalGasMixture::readCoeffs()
         {"R", "densityModel", "referenceTemperature", "Cp", "kappa", "mu"}
     );
 
-    Rgas_ = ldna::getChecked<scalar>
+    gas_.reset
     (
-        gas, "R", interval::open(0, limits::gasConstant)
+        new gasProperties(gas, propertyCheckTmin, propertyCheckTmax, Tref)
     );
     gasBoussinesq_ = readBoussinesq
     (
         gas, "idealGas", "idealGas", "referenceTemperature", "K",
         limits::temperature, gasReferenceTemperature_
     );
-
-    CpGas_ = readFunction
-    (
-        gas, "Cp", Tmin, Tmax, limits::specificHeat, true
-    );
-    kappaGas_ = readFunction(gas, "kappa", Tmin, Tmax, limits::conductivity);
-    muGas_ = readFunction(gas, "mu", Tmin, Tmax, limits::viscosity);
-}
-
-
-Foam::scalar Foam::metalGasMixture::latentSlope
-(
-    const label celli,
-    const scalar m1
-) const
-{
-    const scalar gl = liquidFraction_[celli];
-    if (gl > 0 && gl < 1)
-    {
-        return m1*latentHeat_/(Tliquidus_ - Tsolidus_);
-    }
-    return 0;
 }
 
 
@@ -434,10 +332,6 @@ Foam::metalGasMixture::metalGasMixture
     ),
     Boussinesq_(true),
     referenceDensity_(0),
-    Tsolidus_(0),
-    Tliquidus_(0),
-    latentHeat_(0),
-    Rgas_(0),
     gasBoussinesq_(false),
     gasReferenceTemperature_(0)
 {
@@ -459,7 +353,8 @@ Foam::metalGasMixture::metalGasMixture
     {
         forAll(liquidFraction_, celli)
         {
-            liquidFraction_[celli] = equilibriumLiquidFraction(T_[celli]);
+            liquidFraction_[celli] =
+                metal_->equilibriumLiquidFraction(T_[celli]);
         }
     }
 
@@ -485,79 +380,6 @@ Foam::metalGasMixture::metalGasMixture
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::metalGasMixture::equilibriumLiquidFraction
-(
-    const scalar T
-) const
-{
-    return min(max((T - Tsolidus_)/(Tliquidus_ - Tsolidus_), 0), 1);
-}
-
-
-Foam::scalar Foam::metalGasMixture::metalCp(const scalar T) const
-{
-    if (T <= Tsolidus_)
-    {
-        return CpSolid_->value(T);
-    }
-    if (T >= Tliquidus_)
-    {
-        return CpLiquid_->value(T);
-    }
-    const scalar CpS = CpSolid_->value(Tsolidus_);
-    const scalar CpL = CpLiquid_->value(Tliquidus_);
-    return CpS + (CpL - CpS)*(T - Tsolidus_)/(Tliquidus_ - Tsolidus_);
-}
-
-
-Foam::scalar Foam::metalGasMixture::metalSensibleEnthalpy
-(
-    const scalar T
-) const
-{
-    const scalar Ts = Tsolidus_;
-    const scalar Tl = Tliquidus_;
-
-    if (T <= Ts)
-    {
-        return CpSolid_->integrate(Tref, T);
-    }
-
-    // Mushy zone: Cp linear in T between the solid and liquid values
-    const scalar CpS = CpSolid_->value(Ts);
-    const scalar CpL = CpLiquid_->value(Tl);
-    const scalar hs = CpSolid_->integrate(Tref, Ts);
-    const scalar dT = min(T, Tl) - Ts;
-    const scalar hMushy =
-        hs + CpS*dT + 0.5*(CpL - CpS)*sqr(dT)/(Tl - Ts);
-
-    if (T < Tl)
-    {
-        return hMushy;
-    }
-    return hMushy + CpLiquid_->integrate(Tl, T);
-}
-
-
-Foam::scalar Foam::metalGasMixture::metalDensity
-(
-    const scalar T,
-    const scalar gl
-) const
-{
-    // Each phase's function is used on its own range only
-    return
-        (1 - gl)*rhoSolid_->value(min(T, Tsolidus_))
-      + gl*rhoLiquid_->value(max(T, Tliquidus_));
-}
-
-
-Foam::scalar Foam::metalGasMixture::gasSensibleEnthalpy(const scalar T) const
-{
-    return CpGas_->integrate(Tref, T);
-}
-
-
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::sigma() const
 {
     return sigmaModel_->sigma();
@@ -566,12 +388,12 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::sigma() const
 
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h1() const
 {
-    const scalar L = latentHeat_;
+    const scalar L = metal_->latentHeat();
     return evaluate
     (
         "h1",
         dimEnergy/dimMass,
-        [&](scalar T, scalar gl) { return metalSensibleEnthalpy(T) + gl*L; }
+        [&](scalar T, scalar gl) { return metal_->sensibleEnthalpy(T) + gl*L; }
     );
 }
 
@@ -582,7 +404,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h2() const
     (
         "h2",
         dimEnergy/dimMass,
-        [&](scalar T, scalar) { return gasSensibleEnthalpy(T); }
+        [&](scalar T, scalar) { return gas_->sensibleEnthalpy(T); }
     );
 }
 
@@ -593,7 +415,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp1() const
     (
         "Cp1",
         dimEnergy/dimMass/dimTemperature,
-        [&](scalar T, scalar) { return metalCp(T); }
+        [&](scalar T, scalar) { return metal_->Cp(T); }
     );
 }
 
@@ -604,7 +426,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp2() const
     (
         "Cp2",
         dimEnergy/dimMass/dimTemperature,
-        [&](scalar T, scalar) { return CpGas_->value(T); }
+        [&](scalar T, scalar) { return gas_->Cp(T); }
     );
 }
 
@@ -639,7 +461,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rhoGravity() const
         (
             "R",
             dimVelocity*dimVelocity/dimTemperature,
-            Rgas_
+            gas_->R()
         );
         return alpha1()*rho1Gravity_ + alpha2()*p_/(R*T_);
     }
@@ -671,7 +493,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
     {
         C[celli] =
             m1[celli]*C[celli] + m2[celli]*Cp2Field[celli]
-          + latentSlope(celli, m1Latent[celli]);
+          + metal_->latentSlope(liquidFraction_[celli], m1Latent[celli]);
     }
     C.boundaryFieldRef() = Zero;
 
@@ -778,10 +600,10 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
     const scalarField& m2
 )
 {
-    const scalar Ts = Tsolidus_;
-    const scalar Tl = Tliquidus_;
+    const scalar Ts = metal_->Tsolidus();
+    const scalar Tl = metal_->Tliquidus();
     const scalar dTm = Tl - Ts;
-    const scalar L = latentHeat_;
+    const scalar L = metal_->latentHeat();
 
     const volScalarField Cp1Field(Cp1());
     const volScalarField Cp2Field(Cp2());
@@ -798,7 +620,8 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
         // Local enthalpy as the energy equation linearised it about Tstar,
         // kept by the projection: C T' + m L F(T') = H
         const scalar H =
-            C*Tc + m*L*gl0 + latentSlope(celli, m)*(Tc - Tstar[celli]);
+            C*Tc + m*L*gl0
+          + metal_->latentSlope(liquidFraction_[celli], m)*(Tc - Tstar[celli]);
 
         scalar gl;
         scalar Tnew;
@@ -839,7 +662,7 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
         }
         forAll(Tp, facei)
         {
-            glb[patchi][facei] = equilibriumLiquidFraction(Tp[facei]);
+            glb[patchi][facei] = metal_->equilibriumLiquidFraction(Tp[facei]);
         }
     }
     liquidFraction_.correctBoundaryConditions();
@@ -854,7 +677,7 @@ void Foam::metalGasMixture::correctThermo()
     (
         "rho1",
         dimDensity,
-        [&](scalar T, scalar gl) { return metalDensity(T, gl); }
+        [&](scalar T, scalar gl) { return metal_->density(T, gl); }
     );
     if (Boussinesq_)
     {
@@ -872,7 +695,8 @@ void Foam::metalGasMixture::correctThermo()
         dimDensity/dimPressure,
         [&](scalar T, scalar)
         {
-            return 1/(Rgas_*(gasBoussinesq_ ? gasReferenceTemperature_ : T));
+            return
+                1/(gas_->R()*(gasBoussinesq_ ? gasReferenceTemperature_ : T));
         }
     );
     rho2_ = psi2_*p_;
@@ -885,9 +709,7 @@ void Foam::metalGasMixture::correctThermo()
             kappa_.dimensions(),
             [&](scalar T, scalar gl)
             {
-                return
-                    (1 - gl)*kappaSolid_->value(min(T, Tsolidus_))
-                  + gl*kappaLiquid_->value(max(T, Tliquidus_));
+                return metal_->conductivity(T, gl);
             }
         )
     );
@@ -897,7 +719,7 @@ void Foam::metalGasMixture::correctThermo()
         (
             "kappa2",
             kappa_.dimensions(),
-            [&](scalar T, scalar) { return kappaGas_->value(T); }
+            [&](scalar T, scalar) { return gas_->conductivity(T); }
         )
     );
     kappa_ = alpha1()*kappa1 + alpha2()*kappa2;
@@ -910,7 +732,7 @@ void Foam::metalGasMixture::correctThermo()
             mu_.dimensions(),
             [&](scalar T, scalar)
             {
-                return muLiquid_->value(max(T, Tliquidus_));
+                return metal_->viscosity(T);
             }
         )
     );
@@ -920,7 +742,7 @@ void Foam::metalGasMixture::correctThermo()
         (
             "mu2",
             mu_.dimensions(),
-            [&](scalar T, scalar) { return muGas_->value(T); }
+            [&](scalar T, scalar) { return gas_->viscosity(T); }
         )
     );
     mu_ = alpha1()*mu1 + alpha2()*mu2;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "temperatureTable.H"
+#include "checkedInput.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
 
@@ -74,6 +75,42 @@ Foam::temperatureTable::temperatureTable
         nIntervals *= 2;
     }
     // Not representable within the tolerance: evaluated directly
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::temperatureTable> Foam::temperatureTable::New
+(
+    const dictionary& dict,
+    const word& entryName,
+    const scalar Tlow,
+    const scalar Thigh,
+    const scalar maxValue,
+    const bool withIntegral
+)
+{
+    autoPtr<Function1<scalar>> f(Function1<scalar>::New(entryName, dict));
+
+    // Sample the range finely enough to catch a sign change of a
+    // low-order polynomial or a table entry
+    const label nSamples = 200;
+    for (label i = 0; i <= nSamples; ++i)
+    {
+        const scalar T = Tlow + (Thigh - Tlow)*i/nSamples;
+        ldna::checkValue
+        (
+            dict, entryName, f->value(T),
+            ldna::interval::open(0, maxValue),
+            "at T = " + Foam::name(T) + " K of [" + Foam::name(Tlow) + ", "
+          + Foam::name(Thigh) + "] K"
+        );
+    }
+
+    return autoPtr<temperatureTable>::New
+    (
+        std::move(f), Tlow, Thigh, withIntegral
+    );
 }
 
 

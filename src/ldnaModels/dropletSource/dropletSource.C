@@ -246,9 +246,9 @@ void Foam::fv::dropletSource::readCoeffs()
             dropletTemperature
         );
         wire.enthalpy =
-            mixture.metalSensibleEnthalpy(wire.temperature)
-          + mixture.equilibriumLiquidFraction(wire.temperature)
-           *mixture.latentHeat();
+            mixture.metal().sensibleEnthalpy(wire.temperature)
+          + mixture.metal().equilibriumLiquidFraction(wire.temperature)
+           *mixture.metal().latentHeat();
 
         wire.position =
             dict.found("position")
@@ -581,7 +581,7 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
     volScalarField& gl = mixture.liquidFraction();
     const volScalarField& rho1 = mixture.rho1();
     const volScalarField& rho2 = mixture.rho2();
-    const scalar L = mixture.latentHeat();
+    const scalar L = mixture.metal().latentHeat();
 
     scalar mass = 0;
     forAll(cells, i)
@@ -605,9 +605,9 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
             )/rhoNew;
 
         const scalar T0 = T[celli];
-        const scalar hGas0 = mixture.gasSensibleEnthalpy(T0);
+        const scalar hGas0 = mixture.gas().sensibleEnthalpy(T0);
         const scalar E =
-            a*r1*(mixture.metalSensibleEnthalpy(T0) + gl[celli]*L)
+            a*r1*(mixture.metal().sensibleEnthalpy(T0) + gl[celli]*L)
           + (1 - a - dAlpha)*r2*hGas0
           + dAlpha*r1*wire.enthalpy;
 
@@ -617,10 +617,10 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
             return
                 aNew*r1
                *(
-                    mixture.metalSensibleEnthalpy(Tc)
-                  + mixture.equilibriumLiquidFraction(Tc)*L
+                    mixture.metal().sensibleEnthalpy(Tc)
+                  + mixture.metal().equilibriumLiquidFraction(Tc)*L
                 )
-              + (1 - aNew)*r2*mixture.gasSensibleEnthalpy(Tc);
+              + (1 - aNew)*r2*mixture.gas().sensibleEnthalpy(Tc);
         };
         scalar Tlow = min(T0, wire.temperature) - 1;
         scalar Thigh = max(T0, wire.temperature) + 1;
@@ -630,7 +630,7 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
             (enthalpyAt(Tmid) < E ? Tlow : Thigh) = Tmid;
         }
         T[celli] = 0.5*(Tlow + Thigh);
-        gl[celli] = mixture.equilibriumLiquidFraction(T[celli]);
+        gl[celli] = mixture.metal().equilibriumLiquidFraction(T[celli]);
         alpha1[celli] = aNew;
 
         mass += dAlpha*r1*V[celli];

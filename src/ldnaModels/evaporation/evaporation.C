@@ -76,7 +76,7 @@ void Foam::fv::evaporation::readCoeffs()
     ldna::checkValue
     (
         coeffs_, "boilingTemperature", boilingTemperature_,
-        interval::open(mixture.Tliquidus(), ldna::limits::temperature),
+        interval::open(mixture.metal().Tliquidus(), ldna::limits::temperature),
         "above the metal's liquidus"
     );
     latentHeat_ = ldna::getChecked<scalar>
@@ -185,13 +185,13 @@ void Foam::fv::evaporation::update()
         // L_b less the superheat h1(T) - h1(T_b) the vapour does not carry,
         // and the metal that stays is left at T_b
         const scalar hBoiling =
-            mixture.metalSensibleEnthalpy(boilingTemperature_);
+            mixture.metal().sensibleEnthalpy(boilingTemperature_);
         forAll(massRate_, celli)
         {
             if (T[celli] > boilingTemperature_ && alpha[celli] > 0)
             {
                 const scalar superheat =
-                    mixture.metalSensibleEnthalpy(T[celli]) - hBoiling;
+                    mixture.metal().sensibleEnthalpy(T[celli]) - hBoiling;
                 const scalar we = min(superheat/latentHeat_, scalar(1));
                 massRate_[celli] = we*alpha[celli]*rho1[celli]*rDeltaT;
                 heatSink_[celli] = massRate_[celli]*(latentHeat_ - superheat);

@@ -7,7 +7,6 @@ its output in ``log.<application>`` inside the case, as OpenFOAM's
 """
 from __future__ import annotations
 
-import re
 import shutil
 import subprocess
 from dataclasses import dataclass
@@ -80,48 +79,23 @@ def time_directories(case: Path) -> list[Path]:
     return [path for _, path in sorted(times)]
 
 
-_NONUNIFORM = re.compile(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", re.S)
-_UNIFORM = re.compile(r"internalField\s+uniform\s+([^;]+);")
-
-
 def read_internal_field(path: Path) -> np.ndarray:
-    """Cell values of an ASCII volume field file (scalar or vector).
+    """Cell values of a volume field file (scalar or vector, ASCII or binary).
 
     A uniform field is returned as a single value (array of shape () or (3,)).
+    Read with foamlib's FoamFieldFile.
     """
-    text = Path(path).read_text()
-    match = _NONUNIFORM.search(text)
-    if match:
-        kind, count = match.group(1), int(match.group(2))
-        body = text[match.end():]
-        if kind == "scalar":
-            values = np.array(body.split(")", 1)[0].split(), dtype=float)
-        else:
-            end = body.index("\n)")
-            values = np.array(body[:end].replace("(", " ").replace(")", " ").split(),
-                              dtype=float).reshape(count, -1)
-        if len(values) != count:
-            raise ValueError(f"{path}: expected {count} values, read {len(values)}")
-        return values
-    match = _UNIFORM.search(text)
-    if match:
-        return np.array(match.group(1).strip("() ").split(), dtype=float).squeeze()
-    raise ValueError(f"{path}: no internalField found (binary format?)")
+    from foamlib import FoamFieldFile
+
+    return np.asarray(FoamFieldFile(path).internal_field, dtype=float)
 
 
 def write_internal_field(path: Path, values: np.ndarray) -> None:
-    """Replace the internalField of an ASCII scalar field file by cell ``values``.
+    """Replace the internalField of a field file by cell ``values`` (foamlib);
+    the boundary conditions of the file stay as they are."""
+    from foamlib import FoamFieldFile
 
-    The boundary conditions of the file stay as they are.
-    """
-    path = Path(path)
-    text = path.read_text()
-    body = "\n".join(f"{value:.12g}" for value in np.asarray(values, dtype=float))
-    field = f"internalField   nonuniform List<scalar> {len(values)}\n(\n{body}\n);"
-    text, count = re.subn(r"internalField\s+uniform\s+[^;]+;", lambda _: field, text, count=1)
-    if count != 1:
-        raise ValueError(f"{path}: no uniform internalField to replace")
-    path.write_text(text)
+    FoamFieldFile(path).internal_field = np.asarray(values, dtype=float)
 
 
 def _table_file(directory: Path, file: str) -> Path | None:

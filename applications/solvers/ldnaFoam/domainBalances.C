@@ -11,38 +11,23 @@
 Foam::domainBalances::domainBalances(const fvMesh& mesh)
 :
     mesh_(mesh),
-    file_(mesh, "balances", "balances", dictionary()),
+    file_(mesh, "balances", "balances"),
     energyIterations_(0),
     energyUnconverged_(0)
 {
-    if (file_.writeToFile())
-    {
-        OFstream& os = file_.file();
-        file_.writeHeader
-        (
-            os,
-            "Domain totals and solver health per time step: metal mass [kg],"
-            " total enthalpy [J], temperature range [K], liquid metal volume"
-            " [m3], metal fraction range; energy iteration and linear solves"
-            " of the step"
-        );
-        file_.writeCommented(os, "Time");
-        for
-        (
-            const char* column
-          : {
-                "metalMass", "totalEnthalpy", "Tmin", "Tmax",
-                "liquidMetalVolume", "alphaMin", "alphaMax",
-                "energyIterations", "energyUnconverged", "linearSolves",
-                "maxLinearIterations", "maxFinalResidual",
-                "nonFiniteSolves"
-            }
-        )
+    file_.writeHeader
+    (
+        "Domain totals and solver health per time step: metal mass [kg],"
+        " total enthalpy [J], temperature range [K], liquid metal volume"
+        " [m3], metal fraction range; energy iteration and linear solves"
+        " of the step",
         {
-            file_.writeTabbed(os, column);
+            "metalMass", "totalEnthalpy", "Tmin", "Tmax",
+            "liquidMetalVolume", "alphaMin", "alphaMax",
+            "energyIterations", "energyUnconverged", "linearSolves",
+            "maxLinearIterations", "maxFinalResidual", "nonFiniteSolves"
         }
-        os  << endl;
-    }
+    );
 }
 
 
@@ -147,17 +132,13 @@ void Foam::domainBalances::write
         }
     }
 
-    if (file_.writeToFile())
-    {
-        OFstream& os = file_.file();
-        file_.writeCurrentTime(os);
-        os  << tab << metalMass << tab << totalEnthalpy
-            << tab << Tmin << tab << Tmax << tab << liquidVolume
-            << tab << alphaMin << tab << alphaMax
-            << tab << energyIterations_ << tab << energyUnconverged_
-            << tab << solves << tab << maxIterations
-            << tab << maxFinalResidual << tab << nonFinite << endl;
-    }
+    file_.writeRow
+    ({
+        metalMass, totalEnthalpy, Tmin, Tmax, liquidVolume, alphaMin,
+        alphaMax, scalar(energyIterations_), scalar(energyUnconverged_),
+        scalar(solves), scalar(maxIterations), maxFinalResidual,
+        scalar(nonFinite)
+    });
 
     energyIterations_ = 0;
     energyUnconverged_ = 0;

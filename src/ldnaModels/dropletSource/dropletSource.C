@@ -642,25 +642,20 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
 
 void Foam::fv::dropletSource::writeMassFileHeader()
 {
-    if (massFile_.writeToFile())
+    wordList columns;
+    for (const wireStream& wire : wires_)
     {
-        OFstream& os = massFile_.file();
-        massFile_.writeHeader
-        (
-            os,
-            "Per wire: metal added [kg] and time switched on [s] since the"
-            " start of the run, and the switch's duty fraction"
-        );
-        massFile_.writeCommented(os, "Time");
-        for (const wireStream& wire : wires_)
+        for (const char* column : {"addedMass", "onTime", "dutyFraction"})
         {
-            for (const char* column : {"addedMass", "onTime", "dutyFraction"})
-            {
-                massFile_.writeTabbed(os, wire.name + '_' + column);
-            }
+            columns.append(wire.name + '_' + column);
         }
-        os  << endl;
     }
+    massFile_.writeHeader
+    (
+        "Per wire: metal added [kg] and time switched on [s] since the"
+        " start of the run, and the switch's duty fraction",
+        columns
+    );
 }
 
 
@@ -669,12 +664,7 @@ void Foam::fv::dropletSource::report()
     const Time& time = mesh_.time();
     const scalar elapsed = time.value() - time.startTime().value();
 
-    const bool toFile = massFile_.writeToFile();
-    if (toFile)
-    {
-        massFile_.writeCurrentTime(massFile_.file());
-    }
-
+    scalarList row;
     for (const wireStream& wire : wires_)
     {
         const scalar duty = elapsed > 0 ? wire.onTime/elapsed : 0;
@@ -685,17 +675,12 @@ void Foam::fv::dropletSource::report()
                 << " kg, on time = " << wire.onTime
                 << " s, duty fraction = " << duty << endl;
         }
-        if (toFile)
-        {
-            massFile_.file()
-                << tab << wire.addedMass << tab << wire.onTime << tab << duty;
-        }
+        row.append(wire.addedMass);
+        row.append(wire.onTime);
+        row.append(duty);
     }
 
-    if (toFile)
-    {
-        massFile_.file() << endl;
-    }
+    massFile_.writeRow(row);
 }
 
 
@@ -852,7 +837,7 @@ Foam::fv::dropletSource::dropletSource
     massSource_(mesh.nCells(), Zero),
     enthalpySource_(mesh.nCells(), Zero),
     momentumSource_(mesh.nCells(), Zero),
-    massFile_(mesh, sourceName, "droplets", dictionary())
+    massFile_(mesh, sourceName, "droplets")
 {
     readCoeffs();
     writeMassFileHeader();

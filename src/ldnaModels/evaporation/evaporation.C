@@ -266,15 +266,11 @@ void Foam::fv::evaporation::update()
         Info<< endl;
     }
 
-    if (rateFile_.writeToFile())
-    {
-        OFstream& os = rateFile_.file();
-        rateFile_.writeCurrentTime(os);
-        os  << tab << massRate << tab << evaporatedMass_
-            << tab << massRate*latentHeat_ << tab << heatSink
-            << tab << recoilForce.x() << tab << recoilForce.y()
-            << tab << recoilForce.z() << endl;
-    }
+    rateFile_.writeRow
+    ({
+        massRate, evaporatedMass_, massRate*latentHeat_, heatSink,
+        recoilForce.x(), recoilForce.y(), recoilForce.z()
+    });
 }
 
 
@@ -299,31 +295,19 @@ Foam::fv::evaporation::evaporation
     log_(true),
     updatedTimeIndex_(-1),
     evaporatedMass_(0),
-    rateFile_(mesh, name, "evaporation", dictionary())
+    rateFile_(mesh, name, "evaporation")
 {
     readCoeffs();
 
-    if (rateFile_.writeToFile())
-    {
-        OFstream& os = rateFile_.file();
-        rateFile_.writeHeader
-        (
-            os,
-            "Evaporated mass rate [kg/s], evaporated mass since the start of"
-            " the run [kg], latent heat [W], heat sink [W], recoil force [N]"
-        );
-        rateFile_.writeCommented(os, "Time");
-        for
-        (
-            const char* column
-          : {"massRate", "evaporatedMass", "latentHeat", "heatSink",
-             "recoilForce_x", "recoilForce_y", "recoilForce_z"}
-        )
+    rateFile_.writeHeader
+    (
+        "Evaporated mass rate [kg/s], evaporated mass since the start of the"
+        " run [kg], latent heat [W], heat sink [W], recoil force [N]",
         {
-            rateFile_.writeTabbed(os, column);
+            "massRate", "evaporatedMass", "latentHeat", "heatSink",
+            "recoilForce_x", "recoilForce_y", "recoilForce_z"
         }
-        os  << endl;
-    }
+    );
 }
 
 

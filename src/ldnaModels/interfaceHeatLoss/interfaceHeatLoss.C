@@ -83,25 +83,17 @@ Foam::fv::interfaceHeatLoss::interfaceHeatLoss
     ambientTemperature_(0),
     log_(true),
     loggedTimeIndex_(-1),
-    lossFile_(mesh, name, "losses", dictionary()),
+    lossFile_(mesh, name, "losses"),
     deltaEventNo_(-1)
 {
     readCoeffs();
 
-    if (lossFile_.writeToFile())
-    {
-        OFstream& os = lossFile_.file();
-        lossFile_.writeHeader
-        (
-            os,
-            "Power lost by the metal surface at the first energy iteration"
-            " of the step [W]"
-        );
-        lossFile_.writeCommented(os, "Time");
-        lossFile_.writeTabbed(os, "radiated");
-        lossFile_.writeTabbed(os, "convected");
-        os  << endl;
-    }
+    lossFile_.writeHeader
+    (
+        "Power lost by the metal surface at the first energy iteration"
+        " of the step [W]",
+        {"radiated", "convected"}
+    );
 }
 
 
@@ -177,12 +169,7 @@ void Foam::fv::interfaceHeatLoss::addSup
             Info<< type() << ' ' << name_ << ": radiated = " << radiated
                 << " W, convected = " << convected << " W" << endl;
         }
-        if (lossFile_.writeToFile())
-        {
-            OFstream& os = lossFile_.file();
-            lossFile_.writeCurrentTime(os);
-            os  << tab << radiated << tab << convected << endl;
-        }
+        lossFile_.writeRow({radiated, convected});
     }
 }
 

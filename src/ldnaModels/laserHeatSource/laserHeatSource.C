@@ -31,8 +31,8 @@ const Foam::scalar rayPowerCutoff = 1e-9;
 // The columns of the power table
 const Foam::wordList powerColumns
 ({
-    "targetX", "targetY", "targetZ", "emitted", "absorbedMetal", "absorbedGas", "reflected", "escaped",
-    "stopped", "imbalance"
+    "targetX", "targetY", "targetZ", "emitted", "absorbedMetal",
+    "absorbedGas", "reflected", "escaped", "stopped", "imbalance"
 });
 
 } // End anonymous namespace
@@ -187,21 +187,11 @@ void Foam::fv::laserHeatSource::update()
             << " W, imbalance = " << imbalance << " W" << endl;
     }
 
-    if (powerFile_.writeToFile())
-    {
-        OFstream& os = powerFile_.file();
-        powerFile_.writeCurrentTime(os);
-        for
-        (
-            const scalar value
-          : {c.x(), c.y(), c.z(), P, byMetal, byGas, reflected, escaped,
-             stopped, imbalance}
-        )
-        {
-            os  << tab << value;
-        }
-        os  << endl;
-    }
+    powerFile_.writeRow
+    ({
+        c.x(), c.y(), c.z(), P, byMetal, byGas, reflected, escaped, stopped,
+        imbalance
+    });
 }
 
 
@@ -234,21 +224,14 @@ Foam::fv::laserHeatSource::laserHeatSource
     ),
     updatedTimeIndex_(-1),
     cloud_(mesh, name + "Rays", IDLList<laserRay>()),
-    powerFile_(mesh, name, "power", dictionary())
+    powerFile_(mesh, name, "power")
 {
     readCoeffs();
 
-    if (powerFile_.writeToFile())
-    {
-        OFstream& os = powerFile_.file();
-        powerFile_.writeHeader(os, "Laser target [m] and power balance [W]");
-        powerFile_.writeCommented(os, "Time");
-        for (const word& column : powerColumns)
-        {
-            powerFile_.writeTabbed(os, column);
-        }
-        os  << endl;
-    }
+    powerFile_.writeHeader
+    (
+        "Laser target [m] and power balance [W]", powerColumns
+    );
 }
 
 

@@ -102,13 +102,7 @@ Foam::tmp<Foam::vectorField> Foam::fv::marangoniForce::force()
                 << " N, max tangential stress = " << maxStress << " N/m2"
                 << endl;
         }
-        if (forceFile_.writeToFile())
-        {
-            OFstream& os = forceFile_.file();
-            forceFile_.writeCurrentTime(os);
-            os  << tab << total.x() << tab << total.y() << tab << total.z()
-                << tab << maxStress << endl;
-        }
+        forceFile_.writeRow({total.x(), total.y(), total.z(), maxStress});
     }
 
     return tf;
@@ -128,30 +122,16 @@ Foam::fv::marangoniForce::marangoniForce
     option(name, modelType, dict, mesh),
     log_(true),
     loggedTimeIndex_(-1),
-    forceFile_(mesh, name, "force", dictionary())
+    forceFile_(mesh, name, "force")
 {
     readCoeffs();
 
-    if (forceFile_.writeToFile())
-    {
-        OFstream& os = forceFile_.file();
-        forceFile_.writeHeader
-        (
-            os,
-            "Marangoni force on the metal surface [N] and largest tangential"
-            " stress [N/m2]"
-        );
-        forceFile_.writeCommented(os, "Time");
-        for
-        (
-            const char* column
-          : {"force_x", "force_y", "force_z", "maxTangentialStress"}
-        )
-        {
-            forceFile_.writeTabbed(os, column);
-        }
-        os  << endl;
-    }
+    forceFile_.writeHeader
+    (
+        "Marangoni force on the metal surface [N] and largest tangential"
+        " stress [N/m2]",
+        {"force_x", "force_y", "force_z", "maxTangentialStress"}
+    );
 }
 
 

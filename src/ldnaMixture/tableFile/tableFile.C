@@ -1,0 +1,57 @@
+/*---------------------------------------------------------------------------*\
+  ldnaFoam: laser-assisted double-wire deposition welding
+\*---------------------------------------------------------------------------*/
+
+#include "tableFile.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::tableFile::tableFile
+(
+    const objectRegistry& obr,
+    const fileName& prefix,
+    const word& name
+)
+:
+    functionObjects::writeFile(obr, prefix, name, dictionary())
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::tableFile::writeHeader
+(
+    const string& description,
+    const wordList& columns
+)
+{
+    if (writeToFile())
+    {
+        OFstream& os = file();
+        functionObjects::writeFile::writeHeader(os, description);
+        writeCommented(os, "Time");
+        for (const word& column : columns)
+        {
+            writeTabbed(os, column);
+        }
+        os  << endl;
+    }
+}
+
+
+void Foam::tableFile::writeRow(const scalarList& values)
+{
+    if (writeToFile())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        for (const scalar value : values)
+        {
+            os  << tab << value;
+        }
+        os  << endl;
+    }
+}
+
+
+// ************************************************************************* //

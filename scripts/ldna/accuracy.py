@@ -4,7 +4,8 @@
 time-step setting), runs each copy, and records
 
 - the cost: wall time of the solver run, core-seconds per simulated
-  millisecond (wall time x MPI ranks / simulated ms), cells and steps;
+  millisecond (CPU time of the master rank from the timeInfo table, or the
+  wall time without it, x MPI ranks / simulated ms), cells and steps;
 - the scene's key outputs and their relative error against the analytical
   answer where the scene has one (``cases/stefanMelting``: the Neumann
   melting front) or against the finest run (the LDNA scene: melt-pool width
@@ -28,7 +29,7 @@ from typing import Protocol
 import numpy as np
 
 from . import meshing
-from .foamcase import (BALANCES, copy_case, dictionary_scalar, latest_run_table, read_balances,
+from .foamcase import (BALANCES, copy_case, cpu_seconds, dictionary_scalar, latest_run_table, read_balances,
                        run, run_parallel, time_directories)
 from .foamdict import read_scalars, set_entry
 from .stefan import NeumannSolution, front_position
@@ -170,6 +171,8 @@ class Member:
     cells: int = 0
     steps: int = 0
     wall_time: float = math.nan
+    #: CPU time of the master rank [s] (timeInfo table), or None without it
+    cpu_time: float | None = None
     n_procs: int = 1
     start_time: float = 0.0
     end_time: float = math.nan
@@ -184,8 +187,11 @@ class Member:
 
     @property
     def core_seconds_per_ms(self) -> float:
-        """Core-seconds per simulated millisecond."""
-        return self.wall_time * self.n_procs / ((self.end_time - self.start_time) * 1e3)
+        """Core-seconds per simulated millisecond: the master rank's CPU time
+        (other work on the machine does not count), or the wall time of a case
+        without the timeInfo table, times the ranks."""
+        seconds = self.wall_time if self.cpu_time is None else self.cpu_time
+        return seconds * self.n_procs / ((self.end_time - self.start_time) * 1e3)
 
 
 @dataclass(frozen=True)
@@ -252,6 +258,10 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     else:
         run(case, "ldnaFoam")
     member.wall_time = time.perf_counter() - start
+    try:
+        member.cpu_time = cpu_seconds(case)
+    except FileNotFoundError:
+        member.cpu_time = None
     if n_procs > 1:
         run(case, "reconstructPar -latestTime")
     # Rows of the run's balance table: the initial state and one per step

@@ -117,6 +117,24 @@ def metal_mass_balance(case: Path) -> MassBalance:
     )
 
 
+def patch_flows(case: Path, start: float = -np.inf, end: float = np.inf) -> dict[str, float]:
+    """Metal volume [m3] that left through each of the template's patch flow
+    function objects (``metalFlowIn``, ...; negative: entered) between
+    ``start`` and ``end`` [s]."""
+    case = Path(case)
+    run_start = float(read_balances(case)["time"][0])
+    volumes = {}
+    for name in FLOW_FUNCTION_OBJECTS:
+        rows = read_function_object(case, name, "surfaceFieldValue.dat")
+        if rows.size == 0:
+            continue
+        # Each row is the flow of the step that ended at its time
+        steps = np.diff(np.concatenate(([run_start], rows[:, 0])))
+        inside = (rows[:, 0] > start) & (rows[:, 0] <= end)
+        volumes[name] = float(np.sum(rows[inside, 1] * steps[inside]))
+    return volumes
+
+
 @dataclass(frozen=True)
 class SolverHealth:
     """What the linear solvers and the energy iteration reported over a run."""

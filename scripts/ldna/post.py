@@ -220,8 +220,14 @@ def expected_bead_area(case: Path) -> float:
         key = f"wireDroplets/wires/{wire}"
         mass_rate += (common_density * dictionary_scalar(case, source, f"{key}/feedSpeed")
                       * np.pi * dictionary_scalar(case, source, f"{key}/wireRadius") ** 2)
-    welding_speed = dictionary_scalar(case, source, "enthalpyPorosity/weldingSpeed")
-    return mass_rate / (Metal.from_case(case).reference_density * welding_speed)
+    return mass_rate / (Metal.from_case(case).reference_density * welding_speed(case))
+
+
+def welding_speed(case: Path) -> float:
+    """The substrate's speed [m/s] (the enthalpy-porosity source's ``weldingSpeed``)."""
+    from .foamcase import dictionary_scalar
+
+    return dictionary_scalar(case, "constant/fvOptions", "enthalpyPorosity/weldingSpeed")
 
 
 def bead_arrival_time(case: Path, section: float) -> float | None:
@@ -247,8 +253,7 @@ def _bead_arrival_time(case: Path, section: float) -> float:
     wires = re.findall(r"^\s*(\w+)\s*$", dictionary_value(case, source, "wireDroplets/wires"), re.M)
     spacing = dictionary_scalar(case, source, "wireDroplets/wireSpacing")
     midpoint = first_wire_x + 0.5 * (len(wires) - 1) * spacing
-    welding_speed = dictionary_scalar(case, source, "enthalpyPorosity/weldingSpeed")
-    return (section - midpoint) / welding_speed
+    return (section - midpoint) / welding_speed(case)
 
 
 def bead_not_yet_there(arrival: float | None, time: float, section: float) -> str | None:

@@ -4,10 +4,12 @@ A run of the template from a flat substrate is quasi-steady once the bead's
 transverse section at the function object's fixed section (``beadSection``
 of meltPoolMetrics, behind the pool) stops changing.  The section's area
 varies along the weld - ripples, as on a real bead: the pool sloshes, and
-the area at the fixed section swings by about 10 % with a period of about
-0.5 s (3.75 mm of bead) - so the bead is judged on its mean over
-``AVERAGING_WINDOW``: quasi-steady when the means over the last window and
-over the one before agree within ``STEADY_TOLERANCE``.  Then the mass
+the area at the fixed section swings by about 10 % with a period of
+0.6-0.7 s (4.5-5 mm of bead) - so the bead is judged on its mean over a
+window of whole ripple periods (:func:`averaging_window`, the period
+measured from the area's crossings of its mean after the bead's arrival):
+quasi-steady when the means over the last window and over the one before
+agree within ``STEADY_TOLERANCE``.  Then the mass
 balance holds whatever the models: the mean section equals the wires' mass
 rate over (metal density x welding speed).
 
@@ -30,18 +32,22 @@ case's last time (``ldna post``: metrics and pictures), and writes
 from __future__ import annotations
 
 import json
+import math
 import shutil
 from pathlib import Path
 
 import numpy as np
 
 from . import post
+from .balance import evaporation_table, patch_flows
+from .material import Metal
 from .foamcase import cpu_seconds
 from .meshing import cell_count
 
-#: Window of the bead's mean section [s]: one ripple period of the
-#: template's bead (0.5 s, 3.75 mm of bead at 7.5 mm/s)
-AVERAGING_WINDOW = 0.5
+#: Shortest window of the bead's mean section [s]; the window is a whole
+#: number of the bead's ripple periods (0.6-0.7 s, 4.5-5 mm of bead, in the
+#: template's 6 s run), so that the ripple averages out of the mean
+MIN_AVERAGING_WINDOW = 0.5
 #: The means over the last two windows agree within this share
 STEADY_TOLERANCE = 0.01
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
@@ -64,22 +70,49 @@ def window_mean(times: np.ndarray, areas: np.ndarray, start: float, end: float) 
     return float(np.trapezoid(a, t) / (t[-1] - t[0]))
 
 
-def steadiness(times: np.ndarray, areas: np.ndarray) -> dict:
-    """The mean areas [m2] over the last two windows, whether they agree, and
-    the area's range over the last window."""
+def ripple_period(times: np.ndarray, areas: np.ndarray, start: float) -> float | None:
+    """The ripple's period [s] after ``start``: the median spacing of the
+    area's upward crossings of its mean there; None with fewer than three
+    crossings."""
+    after = times >= start
+    t, a = times[after], areas[after]
+    if t.size < 3:
+        return None
+    above = a > window_mean(t, a, t[0], t[-1])
+    crossings = t[1:][above[1:] & ~above[:-1]]
+    if crossings.size < 3:
+        return None
+    return float(np.median(np.diff(crossings)))
+
+
+def averaging_window(times: np.ndarray, areas: np.ndarray, start: float) -> float:
+    """Whole ripple periods, at least MIN_AVERAGING_WINDOW [s] (that, without a ripple)."""
+    period = ripple_period(times, areas, start)
+    if period is None:
+        return MIN_AVERAGING_WINDOW
+    return period * math.ceil(MIN_AVERAGING_WINDOW / period - 1e-9)
+
+
+def steadiness(times: np.ndarray, areas: np.ndarray, start: float | None = None) -> dict:
+    """The mean areas [m2] over the last two windows of whole ripple periods
+    (measured after ``start``, the bead's arrival at the section), whether they
+    agree, and the area's range over the last window."""
+    start = times[0] if start is None else start
+    window = averaging_window(times, areas, start)
     end = times[-1]
-    last = window_mean(times, areas, end - AVERAGING_WINDOW, end)
-    previous = window_mean(times, areas, end - 2 * AVERAGING_WINDOW, end - AVERAGING_WINDOW)
+    last = window_mean(times, areas, end - window, end)
+    previous = window_mean(times, areas, end - 2 * window, end - window)
     change = abs(last - previous) / last if last > 0 else float("inf")
-    window = times >= end - AVERAGING_WINDOW
+    in_last = times >= end - window
     return {
-        "steady": bool(times[-1] - times[0] >= 2 * AVERAGING_WINDOW
+        "steady": bool(end - max(times[0], start) >= 2 * window
                        and change <= STEADY_TOLERANCE),
+        "window": window,
         "mean": last,
         "previous_mean": previous,
         "change": float(change),
-        "min": float(areas[window].min()),
-        "max": float(areas[window].max()),
+        "min": float(areas[in_last].min()),
+        "max": float(areas[in_last].max()),
     }
 
 
@@ -113,9 +146,9 @@ def plot_history(times: np.ndarray, areas: np.ndarray, expected: float, means: d
                  label=f"mass balance {1e6 * expected:.1f} mm$^2$")
     end = times[-1]
     for k, (mean, shade) in enumerate(((means["mean"], "0.85"), (means["previous_mean"], "0.93"))):
-        start = end - (k + 1) * AVERAGING_WINDOW
-        axes.axvspan(start, start + AVERAGING_WINDOW, color=shade)
-        axes.hlines(1e6 * mean, start, start + AVERAGING_WINDOW, color="C1",
+        start = end - (k + 1) * means["window"]
+        axes.axvspan(start, start + means["window"], color=shade)
+        axes.hlines(1e6 * mean, start, start + means["window"], color="C1",
                     label="mean over the window" if k == 0 else None)
     axes.set_xlabel("time [s]")
     axes.set_ylabel("bead area [mm$^2$]")
@@ -152,6 +185,33 @@ def substrate_section(case: Path) -> float:
                    * dictionary_scalar(case, parameters, "width"))
 
 
+def metal_budget(case: Path, start: float, end: float, expected_area: float,
+                 mean_area: float) -> dict[str, float]:
+    """Where the wires' metal goes [mm3/s], over the window [start, end]:
+    the wires' feed, what passes the section with the bead (mean area times
+    the welding speed), what leaves through the atmosphere (the bead crossing
+    the downstream boundary, and any metal that leaves elsewhere), what
+    evaporates; and the metal that left through the atmosphere over the
+    whole run [mm3]."""
+    speed = post.welding_speed(case)
+    duration = end - start
+    window = patch_flows(case, start, end)
+    evaporation = evaporation_table(case)
+    evaporated = 0.0
+    if evaporation is not None:
+        inside = (evaporation["Time"] >= start) & (evaporation["Time"] <= end)
+        if inside.any():
+            mass = evaporation["evaporatedMass"][inside]
+            evaporated = float(mass[-1] - mass[0]) / Metal.from_case(case).reference_density
+    return {
+        "feed_mm3_per_s": 1e9 * expected_area * speed,
+        "section_flow_mm3_per_s": 1e9 * mean_area * speed,
+        "atmosphere_outflow_mm3_per_s": 1e9 * window.get("metalFlowAtmosphere", math.nan) / duration,
+        "evaporation_mm3_per_s": 1e9 * evaporated / duration,
+        "metal_to_atmosphere_mm3": 1e9 * patch_flows(case).get("metalFlowAtmosphere", math.nan),
+    }
+
+
 def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
                 master_cpu_seconds: float | None = None) -> dict:
     """Write bead.json, bead_area.png and the pictures of ``case`` into ``output``.
@@ -168,7 +228,8 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         case, output / "pictures", bead_section=post.configured_bead_section(case, section))
     figures = post.summary(case, result, time)
     times, areas = bead_area_history(case, section)
-    means = steadiness(times, areas)
+    means = steadiness(times, areas, start=figures["bead_arrival_s"])
+    end = float(times[-1])
     figures.update({
         "section_function_object": section,
         "end_time_s": float(times[-1]),
@@ -176,7 +237,7 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         "n_procs": ranks(case),
         "core_hours": hours,
         "core_hours_per_simulated_s": hours / float(times[-1]),
-        "averaging_window_s": AVERAGING_WINDOW,
+        "averaging_window_s": means["window"],
         "mean_bead_area_mm2": 1e6 * means["mean"],
         "previous_mean_bead_area_mm2": 1e6 * means["previous_mean"],
         "steady": means["steady"],
@@ -185,6 +246,8 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         "bead_area_max_mm2": 1e6 * means["max"],
         "mass_balance_error": 1e6 * means["mean"] / figures["expected_bead_area_mm2"] - 1,
     })
+    figures.update(metal_budget(case, end - means["window"], end,
+                                1e-6 * figures["expected_bead_area_mm2"], means["mean"]))
     net = section_metal_area(case, 1e-3 * figures["bead_section_mm"]) - substrate_section(case)
     figures["net_deposit_area_mm2"] = 1e6 * net
     figures["net_mass_balance_error"] = (figures["net_deposit_area_mm2"]

@@ -96,13 +96,7 @@ def metal_mass_balance(case: Path) -> MassBalance:
 
     inflow = outflow = 0.0
     for name in FLOW_FUNCTION_OBJECTS:
-        rows = read_function_object(case, name, "surfaceFieldValue.dat")
-        if rows.size == 0:
-            continue
-        # Each row is the flow of the step that ended at its time
-        times = rows[:, 0]
-        steps = np.diff(np.concatenate(([balances["time"][0]], times)))
-        volume = rows[:, 1] * steps
+        _, volume = step_flows(case, name, float(balances["time"][0]))
         inflow -= metal.reference_density * volume[volume < 0].sum()
         outflow += metal.reference_density * volume[volume > 0].sum()
 
@@ -117,6 +111,17 @@ def metal_mass_balance(case: Path) -> MassBalance:
     )
 
 
+def step_flows(case: Path, name: str, run_start: float) -> tuple[np.ndarray, np.ndarray]:
+    """Times [s] and metal volumes [m3] out (negative: in) per step of the
+    patch flow function object ``name``: each row is the flow of the step
+    that ended at its time, the first step starting at ``run_start``."""
+    rows = read_function_object(case, name, "surfaceFieldValue.dat")
+    if rows.size == 0:
+        return np.empty(0), np.empty(0)
+    times = rows[:, 0]
+    return times, rows[:, 1] * np.diff(np.concatenate(([run_start], times)))
+
+
 def patch_flows(case: Path, start: float = -np.inf, end: float = np.inf) -> dict[str, float]:
     """Metal volume [m3] that left through each of the template's patch flow
     function objects (``metalFlowIn``, ...; negative: entered) between
@@ -125,13 +130,9 @@ def patch_flows(case: Path, start: float = -np.inf, end: float = np.inf) -> dict
     run_start = float(read_balances(case)["time"][0])
     volumes = {}
     for name in FLOW_FUNCTION_OBJECTS:
-        rows = read_function_object(case, name, "surfaceFieldValue.dat")
-        if rows.size == 0:
-            continue
-        # Each row is the flow of the step that ended at its time
-        steps = np.diff(np.concatenate(([run_start], rows[:, 0])))
-        inside = (rows[:, 0] > start) & (rows[:, 0] <= end)
-        volumes[name] = float(np.sum(rows[inside, 1] * steps[inside]))
+        times, volume = step_flows(case, name, run_start)
+        if times.size:
+            volumes[name] = float(volume[(times > start) & (times <= end)].sum())
     return volumes
 
 

@@ -23,7 +23,8 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.foamcase import dictionary_value, read_internal_field, run, time_directories
+from ldna.foamcase import (dictionary_value, read_internal_field, run, time_directories,
+                           write_internal_field)
 from ldna.foamdict import set_entry
 
 #: The case's source [W], beam radius [m], material and speed
@@ -218,3 +219,44 @@ def test_hot_slab_heats_argon_by_transient_conduction(tmp_path: Path, slab_exces
           f"{CONDUCTION_TIME} s, conduction {exact:.4f} J/m2 "
           f"({100 * (gained - exact) / exact:+.1f} %); slab top {surface_temperature:.3f} K")
     assert abs(gained - exact) < CONDUCTION_TOLERANCE * exact
+
+
+#: A thin film on the slab: 2 % metal in the first cell above it (a 9 um
+#: layer), 1000 K above the slab and below the solidus, so that only
+#: conduction acts
+FILM_FRACTION = 0.02
+FILM_EXCESS = 1000.0
+#: Eight time constants of the film through half a cell of 316L (0.6 ms:
+#: 45 J/m2/K over about 7e4 W/m2/K); through the volume-mean conductivity
+#: of its cell, mostly argon, the time constant would be 30 ms
+FILM_TIME = 5e-3
+FILM_TOLERANCE = 0.01
+
+
+def test_thin_film_cools_through_the_metal_it_lies_on(tmp_path: Path) -> None:
+    """A film of metal on cold metal gives its heat to the metal it lies on
+    as a layer of its own thickness would: within FILM_TIME its excess over
+    the slab's top cell falls below FILM_TOLERANCE of its initial excess,
+    not through the gas of its cell."""
+    case = column_case(tmp_path, 0.0)
+    control = case / "system" / "controlDict"
+    set_entry(control, "endTime", f"{FILM_TIME:g}")
+    set_entry(control, "writeInterval", f"{FILM_TIME:g}")
+    set_entry(control, "maxDeltaT", "1e-4")
+    initial = time_directories(case)[0]
+    alpha = read_internal_field(initial / "alpha.metal")
+    temperature = np.full(alpha.shape, AMBIENT)
+    film = int(np.argmax(alpha < 0.5))
+    alpha[film] = FILM_FRACTION
+    temperature[film] = AMBIENT + FILM_EXCESS
+    write_internal_field(initial / "alpha.metal", alpha)
+    write_internal_field(initial / "T", temperature)
+
+    run(case, "ldnaFoam")
+    last = time_directories(case)[-1]
+    temperature = read_internal_field(last / "T")
+    excess = temperature[film] - temperature[film - 1]
+    print(f"film {FILM_FRACTION:g} metal, {FILM_EXCESS:g} K above the slab: after "
+          f"{FILM_TIME:g} s {excess:.3f} K above the slab's top cell "
+          f"({temperature[film]:.1f} K; gas above {temperature[film + 1]:.1f} K)")
+    assert abs(excess) < FILM_TOLERANCE * FILM_EXCESS

@@ -43,7 +43,6 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "metalInsertion.H"
-#include "harmonic.H"
 #include "localMax.H"
 #include "localMin.H"
 #include "upwind.H"

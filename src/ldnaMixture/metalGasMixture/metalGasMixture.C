@@ -409,6 +409,165 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h2() const
 }
 
 
+namespace
+{
+
+// Thermal resistance times area [m2 K/W] between the centre of the heat
+// capacity of a cell and its face at distance d, the cell's metal fraction
+// alpha lying as a layer against the face (thickness 2 alpha d) and its gas
+// behind it; metalHeatShare is the metal's share of the cell's heat
+// capacity.  Pure gas and pure metal give d/kappa
+Foam::scalar layeredHalfResistance
+(
+    const Foam::scalar d,
+    const Foam::scalar alpha,
+    const Foam::scalar metalHeatShare,
+    const Foam::scalar kappaMetal,
+    const Foam::scalar kappaGas
+)
+{
+    const Foam::scalar centre = d*(1 + alpha - metalHeatShare);
+    const Foam::scalar metalLayer = 2*alpha*d;
+    if (centre <= metalLayer)
+    {
+        return centre/kappaMetal;
+    }
+    return metalLayer/kappaMetal + (centre - metalLayer)/kappaGas;
+}
+
+
+// Conductivity of the face between cells a and b at distances da, db
+struct faceCell
+{
+    Foam::scalar d, alpha, metalHeatShare, kappaMetal, kappaGas, kappa;
+};
+
+Foam::scalar layeredFaceConductivity(const faceCell& a, const faceCell& b)
+{
+    const faceCell& lean = a.alpha <= b.alpha ? a : b;
+    const faceCell& rich = a.alpha <= b.alpha ? b : a;
+    return
+        (a.d + b.d)
+       /(
+            layeredHalfResistance
+            (
+                lean.d, lean.alpha, lean.metalHeatShare,
+                lean.kappaMetal, lean.kappaGas
+            )
+          + rich.d/rich.kappa
+        );
+}
+
+} // End anonymous namespace
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::metalGasMixture::kappaf() const
+{
+    const fvMesh& mesh = alpha1().mesh();
+
+    const volScalarField metal(max(min(alpha1(), scalar(1)), scalar(0)));
+    const volScalarField kappa1
+    (
+        evaluate
+        (
+            "kappa1",
+            kappa_.dimensions(),
+            [&](scalar T, scalar gl) { return metal_->conductivity(T, gl); }
+        )
+    );
+    const volScalarField kappa2
+    (
+        evaluate
+        (
+            "kappa2",
+            kappa_.dimensions(),
+            [&](scalar T, scalar) { return gas_->conductivity(T); }
+        )
+    );
+    const volScalarField metalHeat(metal*rho1_*Cp1());
+    const volScalarField metalHeatShare
+    (
+        metalHeat/(metalHeat + (1 - metal)*rho2Heat()*Cp2())
+    );
+
+    const auto cellOf = [&](const label celli, const scalar d)
+    {
+        return faceCell
+        {
+            d, metal[celli], metalHeatShare[celli],
+            kappa1[celli], kappa2[celli], kappa_[celli]
+        };
+    };
+
+    tmp<surfaceScalarField> tkappaf
+    (
+        new surfaceScalarField
+        (
+            IOobject("kappaf", mesh.time().timeName(), mesh),
+            mesh,
+            kappa_.dimensions()
+        )
+    );
+    surfaceScalarField& kf = tkappaf.ref();
+
+    const labelUList& owner = mesh.owner();
+    const labelUList& neighbour = mesh.neighbour();
+    const vectorField& C = mesh.C();
+    const vectorField& Cf = mesh.Cf();
+    const vectorField& Sf = mesh.Sf();
+    const scalarField& magSf = mesh.magSf();
+
+    forAll(owner, facei)
+    {
+        const vector n(Sf[facei]/magSf[facei]);
+        kf[facei] = layeredFaceConductivity
+        (
+            cellOf(owner[facei], mag(n & (Cf[facei] - C[owner[facei]]))),
+            cellOf(neighbour[facei], mag(n & (C[neighbour[facei]] - Cf[facei])))
+        );
+    }
+
+    forAll(kf.boundaryField(), patchi)
+    {
+        fvsPatchScalarField& kfp = kf.boundaryFieldRef()[patchi];
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (!patch.coupled())
+        {
+            kfp = kappa_.boundaryField()[patchi];
+            continue;
+        }
+        const labelUList& faceCells = patch.faceCells();
+        const vectorField nf(patch.nf());
+        const vectorField ownerDelta(patch.Cf() - patch.Cn());
+        const vectorField delta(patch.delta());
+        const scalarField nbrMetal(metal.boundaryField()[patchi].patchNeighbourField());
+        const scalarField nbrShare
+        (
+            metalHeatShare.boundaryField()[patchi].patchNeighbourField()
+        );
+        const scalarField nbrKappa1(kappa1.boundaryField()[patchi].patchNeighbourField());
+        const scalarField nbrKappa2(kappa2.boundaryField()[patchi].patchNeighbourField());
+        const scalarField nbrKappa(kappa_.boundaryField()[patchi].patchNeighbourField());
+        forAll(kfp, i)
+        {
+            const scalar dOwner = mag(nf[i] & ownerDelta[i]);
+            kfp[i] = layeredFaceConductivity
+            (
+                cellOf(faceCells[i], dOwner),
+                faceCell
+                {
+                    max(mag(nf[i] & delta[i]) - dOwner, SMALL),
+                    nbrMetal[i], nbrShare[i],
+                    nbrKappa1[i], nbrKappa2[i], nbrKappa[i]
+                }
+            );
+        }
+    }
+
+    return tkappaf;
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp1() const
 {
     return evaluate

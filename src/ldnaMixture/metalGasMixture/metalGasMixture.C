@@ -442,12 +442,10 @@ struct faceCell
     Foam::scalar d, alpha, metalHeatShare, kappaMetal, kappaGas, kappa;
 };
 
-Foam::scalar layeredFaceConductivity(const faceCell& a, const faceCell& b)
+Foam::scalar seriesConductivity(const faceCell& lean, const faceCell& rich)
 {
-    const faceCell& lean = a.alpha <= b.alpha ? a : b;
-    const faceCell& rich = a.alpha <= b.alpha ? b : a;
     return
-        (a.d + b.d)
+        (lean.d + rich.d)
        /(
             layeredHalfResistance
             (
@@ -456,6 +454,21 @@ Foam::scalar layeredFaceConductivity(const faceCell& a, const faceCell& b)
             )
           + rich.d/rich.kappa
         );
+}
+
+
+// Symmetric in a and b, so that both sides of a processor face agree
+Foam::scalar layeredFaceConductivity(const faceCell& a, const faceCell& b)
+{
+    if (a.alpha < b.alpha)
+    {
+        return seriesConductivity(a, b);
+    }
+    if (b.alpha < a.alpha)
+    {
+        return seriesConductivity(b, a);
+    }
+    return 0.5*(seriesConductivity(a, b) + seriesConductivity(b, a));
 }
 
 } // End anonymous namespace

@@ -436,7 +436,8 @@ Foam::scalar layeredHalfResistance
 }
 
 
-// Conductivity of the face between cells a and b at distances da, db
+// One cell of a face: its distance to the face, metal fraction, metal's
+// share of its heat capacity, phase and volume-mean conductivities
 struct faceCell
 {
     Foam::scalar d, alpha, metalHeatShare, kappaMetal, kappaGas, kappa;
@@ -474,29 +475,35 @@ Foam::scalar layeredFaceConductivity(const faceCell& a, const faceCell& b)
 } // End anonymous namespace
 
 
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::kappa1() const
+{
+    return evaluate
+    (
+        "kappa1",
+        kappa_.dimensions(),
+        [&](scalar T, scalar gl) { return metal_->conductivity(T, gl); }
+    );
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::kappa2() const
+{
+    return evaluate
+    (
+        "kappa2",
+        kappa_.dimensions(),
+        [&](scalar T, scalar) { return gas_->conductivity(T); }
+    );
+}
+
+
 Foam::tmp<Foam::surfaceScalarField> Foam::metalGasMixture::kappaf() const
 {
     const fvMesh& mesh = alpha1().mesh();
 
     const volScalarField metal(max(min(alpha1(), scalar(1)), scalar(0)));
-    const volScalarField kappa1
-    (
-        evaluate
-        (
-            "kappa1",
-            kappa_.dimensions(),
-            [&](scalar T, scalar gl) { return metal_->conductivity(T, gl); }
-        )
-    );
-    const volScalarField kappa2
-    (
-        evaluate
-        (
-            "kappa2",
-            kappa_.dimensions(),
-            [&](scalar T, scalar) { return gas_->conductivity(T); }
-        )
-    );
+    const volScalarField kappaMetal(kappa1());
+    const volScalarField kappaGas(kappa2());
     const volScalarField metalHeat(metal*rho1_*Cp1());
     const volScalarField metalHeatShare
     (
@@ -508,7 +515,7 @@ Foam::tmp<Foam::surfaceScalarField> Foam::metalGasMixture::kappaf() const
         return faceCell
         {
             d, metal[celli], metalHeatShare[celli],
-            kappa1[celli], kappa2[celli], kappa_[celli]
+            kappaMetal[celli], kappaGas[celli], kappa_[celli]
         };
     };
 
@@ -558,8 +565,14 @@ Foam::tmp<Foam::surfaceScalarField> Foam::metalGasMixture::kappaf() const
         (
             metalHeatShare.boundaryField()[patchi].patchNeighbourField()
         );
-        const scalarField nbrKappa1(kappa1.boundaryField()[patchi].patchNeighbourField());
-        const scalarField nbrKappa2(kappa2.boundaryField()[patchi].patchNeighbourField());
+        const scalarField nbrKappa1
+        (
+            kappaMetal.boundaryField()[patchi].patchNeighbourField()
+        );
+        const scalarField nbrKappa2
+        (
+            kappaGas.boundaryField()[patchi].patchNeighbourField()
+        );
         const scalarField nbrKappa(kappa_.boundaryField()[patchi].patchNeighbourField());
         forAll(kfp, i)
         {
@@ -873,28 +886,7 @@ void Foam::metalGasMixture::correctThermo()
     );
     rho2_ = psi2_*p_;
 
-    const volScalarField kappa1
-    (
-        evaluate
-        (
-            "kappa1",
-            kappa_.dimensions(),
-            [&](scalar T, scalar gl)
-            {
-                return metal_->conductivity(T, gl);
-            }
-        )
-    );
-    const volScalarField kappa2
-    (
-        evaluate
-        (
-            "kappa2",
-            kappa_.dimensions(),
-            [&](scalar T, scalar) { return gas_->conductivity(T); }
-        )
-    );
-    kappa_ = alpha1()*kappa1 + alpha2()*kappa2;
+    kappa_ = alpha1()*kappa1() + alpha2()*kappa2();
 
     const volScalarField mu1
     (

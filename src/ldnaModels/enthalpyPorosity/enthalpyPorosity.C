@@ -172,15 +172,20 @@ void Foam::fv::enthalpyPorosity::addSup
         dimensionedScalar(dimDensity/dimTime, Zero)
     );
 
-    // Every cell that holds metal, in proportion to its metal: a thin solid
-    // film or a frozen splash is held as firmly per unit of metal as the
-    // substrate (a threshold on alpha let films below it drift freely)
+    // Every cell that holds solid metal, through the cell's solid fraction
+    // s = alpha (1 - g_l) as the porous medium's (Voller & Prakash 1987, as
+    // OpenFOAM's icoReactingMultiphaseInterFoam does for a solid phase): a
+    // full metal cell takes the Carman-Kozeny sink of its liquid fraction,
+    // a cell whose solid is a sliver beside gas lets the gas and the liquid
+    // through.  Linear in alpha, a cell with 0.1 % frozen metal was rigid
+    // and kept its gas under the deposit (docs/validation/bead.md)
     for (const label celli : cells_)
     {
         const scalar metal = min(max(alpha[celli], scalar(0)), scalar(1));
         const scalar gl = min(max(liquidFraction[celli], scalar(0)), scalar(1));
+        const scalar solid = metal*(1 - gl);
         coeff[celli] =
-            metal*mushyZoneConstant_*sqr(1 - gl)/(pow3(gl) + porosityEpsilon_);
+            mushyZoneConstant_*sqr(solid)/(pow3(1 - solid) + porosityEpsilon_);
     }
 
     const dimensionedVector Us

@@ -43,6 +43,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "metalInsertion.H"
+#include "solidMetalMotion.H"
 #include "localMax.H"
 #include "localMin.H"
 #include "upwind.H"

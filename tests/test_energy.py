@@ -14,7 +14,7 @@ import pytest
 
 from ldna.foamcase import alpha_bounds, dictionary_value, read_balances, read_internal_field, run
 
-#: Allowed relative error of the enthalpy balance (issue: 0.5 %)
+#: Allowed relative error of the enthalpy balance (required: 0.5 %)
 ENERGY_TOLERANCE = 0.005
 #: Allowed excursion of the metal fraction outside [0, 1]
 ALPHA_BOUND_TOLERANCE = 1e-6

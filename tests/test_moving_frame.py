@@ -16,9 +16,9 @@ from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances,
 from ldna.foamdict import keep_blocks, set_entry
 from ldna.meshing import mesh_case
 
-#: Allowed relative velocity error of the solid substrate (issue: 1 %)
+#: Allowed relative velocity error of the solid substrate (required: 1 %)
 VELOCITY_TOLERANCE = 0.01
-#: Allowed relative imbalance of metal inflow and outflow (issue: metal
+#: Allowed relative imbalance of metal inflow and outflow (required: metal
 #: leaves at the rate it enters)
 FLOW_BALANCE_TOLERANCE = 0.01
 #: Largest gas speed over the welding speed in the cold scene

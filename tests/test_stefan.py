@@ -14,7 +14,7 @@ import pytest
 from ldna.foamcase import run
 from ldna.stefan import NeumannSolution, front_position, neumann_lambda
 
-#: Allowed relative error of the front position (issue: 3 %)
+#: Allowed relative error of the front position (required: 3 %)
 FRONT_TOLERANCE = 0.03
 
 

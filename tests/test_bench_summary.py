@@ -6,13 +6,13 @@ import json
 
 import pytest
 
-from ldna.benchmark import SolverCosts, StepCost
+from ldna.benchmark import TEMPLATE, SolverCosts, StepCost, _monte_carlo_laser
 
 
 @pytest.mark.unit
 def test_summary_holds_the_ratios_of_the_measured_times() -> None:
     costs = SolverCosts(
-        level=0, cells=36077, steps=40, delta_t=5e-5,
+        level=0, cells=36077, steps=40, delta_t=5e-5, start_time=0.1,
         ldna_no_effects=0.30, compressible_inter_foam=0.25,
         effects=[StepCost("wireDroplets", 0.33, 0.33 / 0.30)],
         all_effects=0.45, template_delta_t=1.2e-4,
@@ -24,3 +24,17 @@ def test_summary_holds_the_ratios_of_the_measured_times() -> None:
     assert summary["effect_ratios"] == {"wireDroplets": pytest.approx(1.1)}
     assert summary["np2_efficiency"] == pytest.approx(0.45 / (2 * 0.30))
     assert (summary["cells"], summary["level"]) == (36077, 0)
+
+
+@pytest.mark.unit
+def test_monte_carlo_variant_changes_only_the_templates_absorption_model() -> None:
+    options = (TEMPLATE / "constant" / "fvOptions").read_text()
+    variant = _monte_carlo_laser(options)
+    laser = variant[variant.index("\nlaser\n"):]
+    laser = laser[:laser.index("\n}\n")]
+    assert "absorptionModel     monteCarlo;" in laser
+    assert "beerLambert" not in variant
+    # Every other line of the template stays
+    kept = [line for line in options.splitlines() if "beerLambert" not in line
+            and "nRaysAcross" not in line and not line.strip().startswith("//")]
+    assert all(line in variant for line in kept)

@@ -26,7 +26,7 @@ def _bench_laser(args: argparse.Namespace) -> int:
 
 def _bench(args: argparse.Namespace) -> int:
     costs = benchmark.solver_costs(level=args.level, steps=args.steps, n_procs=args.np,
-                                   repeats=args.repeats)
+                                   repeats=args.repeats, start_time=args.start_time)
     if args.json:
         print(json.dumps(costs.summary()))
     else:
@@ -190,6 +190,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     bench.add_argument("--level", type=_level, default=0, help="mesh level (0..3)")
     bench.add_argument("--steps", type=_positive_int, default=40, help="fixed time steps per run")
+    bench.add_argument("--start-time", type=_positive_float, default=0.1,
+                       help="process time [s] the template runs to first; every variant starts "
+                            "from that state")
     bench.add_argument("--np", type=_positive_int, default=2, help="MPI ranks of the parallel run")
     bench.add_argument("--repeats", type=_positive_int, default=3,
                        help="runs of each variant; the least time per step counts")

@@ -38,6 +38,7 @@ Description
 #include "metalFractionLimiter.H"
 #include "domainBalances.H"
 #include "metalSources.H"
+#include "fluxReconstruction.H"
 #include "subCycle.H"
 #include "metalGasMixture.H"
 #include "pimpleControl.H"
@@ -118,6 +119,7 @@ int main(int argc, char *argv[])
 
             // --- Pressure corrector loop
             addProfiling(pressure, "ldnaFoam.pEqn");
+            #include "pressureStepFields.H"
             while (pimple.correct())
             {
                 #include "pEqn.H"

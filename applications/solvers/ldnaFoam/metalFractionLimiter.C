@@ -111,6 +111,18 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         V*(Su - (rDeltaT - Sp)*max(psiMin, 0.0) + psiI*rDeltaT)
     );
 
+    // The sweeps visit only the internal faces that carry a correction: a
+    // face without one adds nothing to its cells' fluxes, so its factor
+    // changes no other (in bulk metal and gas, most faces)
+    DynamicList<label> correctedFaces(nInternal);
+    for (label facei = 0; facei < nInternal; ++facei)
+    {
+        if (phiCorr[facei] != 0)
+        {
+            correctedFaces.append(facei);
+        }
+    }
+
     scalarField lambda(mesh_.nFaces(), 1);
     scalarField lambda0(lambda.size());
     scalarField limitedOutflow(psi.size());
@@ -122,7 +134,7 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         limitedOutflow = 0;
         limitedInflow = 0;
 
-        for (label facei = 0; facei < nInternal; ++facei)
+        for (const label facei : correctedFaces)
         {
             const scalar f = lambda[facei]*phiCorr[facei];
             if (f > 0)
@@ -176,7 +188,7 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
 
         // A face's factor: the lesser of its upwind cell's out-factor and
         // its downwind cell's in-factor
-        for (label facei = 0; facei < nInternal; ++facei)
+        for (const label facei : correctedFaces)
         {
             const label own = owner[facei];
             const label nei = neighbour[facei];

@@ -765,6 +765,12 @@ Foam::metalGasMixture::surfaceTensionForce() const
 }
 
 
+void Foam::metalGasMixture::correctNormal()
+{
+    interfaceProperties::correct();
+}
+
+
 void Foam::metalGasMixture::correct()
 {
     // Always: besides its curvature it updates nHatf, the interface normal

@@ -126,11 +126,18 @@ Foam::scalar Foam::laserAbsorptionModel::absorptivity
     }
 
     const scalar a = absorptivity_->value(td.T[celli]);
-    ldna::checkValue
-    (
-        dict_, "absorptivity", a, ldna::interval::closed(0, 1),
-        "at T = " + Foam::name(td.T[celli]) + " K"
-    );
+    // The message is built only for a value out of range: this runs at every
+    // cell a ray crosses in metal, and formatting the temperature each time
+    // cost more than the ray's absorption
+    const ldna::interval allowed(ldna::interval::closed(0, 1));
+    if (!allowed.contains(a))
+    {
+        ldna::checkValue
+        (
+            dict_, "absorptivity", a, allowed,
+            "at T = " + Foam::name(td.T[celli]) + " K"
+        );
+    }
     return a;
 }
 

@@ -136,8 +136,12 @@ void Foam::fv::laserHeatSource::update()
     const volScalarField& alpha =
         mesh_.lookupObject<volScalarField>(alphaName_);
     const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
-    // Interface normals out of the metal
-    const vectorField normal(-metalInterfaceNormal(fvc::grad(alpha)()));
+    // Interface normals out of the metal, if the absorption model uses them
+    vectorField normal(mesh_.nCells(), Zero);
+    if (absorption_->usesSurfaceNormal())
+    {
+        normal = -metalInterfaceNormal(fvc::grad(alpha)());
+    }
 
     // Random numbers of scattering, different per processor
     Random scatterGen(mesh_.time().timeIndex() + 7919*Pstream::myProcNo());

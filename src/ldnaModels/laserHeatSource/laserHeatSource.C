@@ -98,14 +98,13 @@ void Foam::fv::laserHeatSource::update()
             << " oscillation) lies outside the mesh, whose bounds are "
             << bounds << exit(FatalIOError);
     }
-    const scalar segmentLength = 2*bounds.mag();
-    const scalar reach = beam_.sourceDistance() + segmentLength;
+    const scalar reach = beam_.sourceDistance() + 2*bounds.mag();
 
     DynamicList<vector2D> across;
     DynamicList<scalar> shares;
     absorption_->rays(beam_, mesh_.time().timeIndex(), across, shares);
 
-    cloud_.clear();
+    DynamicList<laserRay> rays(across.size());
     scalar started = 0;
     forAll(across, rayi)
     {
@@ -118,17 +117,14 @@ void Foam::fv::laserHeatSource::update()
             continue;
         }
         const point inside = entry + 1e-9*bounds.mag()*d;
-        const label celli = mesh_.findCell(inside);
+        const label celli = tracer_.startCell(inside);
         if (celli < 0)
         {
             continue;
         }
 
         const scalar rayPower = P*shares[rayi];
-        cloud_.addParticle
-        (
-            new laserRay(mesh_, inside, celli, d, segmentLength, rayPower)
-        );
+        rays.append(laserRay(inside, celli, d, rayPower));
         started += rayPower;
     }
     reduce(started, sumOp<scalar>());
@@ -149,17 +145,17 @@ void Foam::fv::laserHeatSource::update()
     scalarField absorbed(mesh_.nCells(), Zero);
     laserRay::trackingData td
     (
-        cloud_,
+        mesh_,
         absorption_(),
         alpha.primitiveField(),
         T.primitiveField(),
         normal,
-        segmentLength,
+        SMALL*bounds.mag(),
         rayPowerCutoff*P/max(across.size(), 1),
         scatterGen,
         absorbed
     );
-    cloud_.move(cloud_, td, mesh_.time().deltaTValue());
+    tracer_.trace(rays, td);
 
     powerDensity_.primitiveFieldRef() = absorbed/mesh_.V();
     powerDensity_.correctBoundaryConditions();
@@ -227,7 +223,7 @@ Foam::fv::laserHeatSource::laserHeatSource
         dimensionedScalar(dimPower/dimVolume, Zero)
     ),
     updatedTimeIndex_(-1),
-    cloud_(mesh, name + "Rays", IDLList<laserRay>()),
+    tracer_(mesh),
     powerFile_(mesh, name, "power")
 {
     readCoeffs();

@@ -4,36 +4,41 @@
 
 #include "laserRay.H"
 #include "laserAbsorptionModel.H"
+#include "processorCyclicPolyPatch.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Local Constants  * * * * * * * * * * * * * //
 
-namespace Foam
+namespace
 {
-    defineTemplateTypeNameAndDebug(Cloud<laserRay>, 0);
-}
+
+// Steps in a row without progress (a ray on an edge or vertex passes a few
+// cells at zero distance) before a ray counts as stuck
+const Foam::label maxStuckSteps = 100;
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::laserRay::trackingData::trackingData
 (
-    Cloud<laserRay>& cloud,
+    const polyMesh& mesh,
     const laserAbsorptionModel& model,
     const scalarField& alpha,
     const scalarField& T,
     const vectorField& normal,
-    const scalar segmentLength,
+    const scalar stuckLength,
     const scalar powerCutoff,
     Random& rndGen,
     scalarField& absorbed
 )
 :
-    particle::trackingData(cloud),
+    mesh(mesh),
     model(model),
     alpha(alpha),
     T(T),
     normal(normal),
-    segmentLength(segmentLength),
+    stuckLength(stuckLength),
     powerCutoff(powerCutoff),
     rndGen(rndGen),
     absorbed(absorbed),
@@ -43,22 +48,28 @@ Foam::laserRay::trackingData::trackingData
 {}
 
 
+Foam::laserRay::laserRay()
+:
+    laserRay(Zero, -1, vector(0, 0, -1), 0)
+{}
+
+
 Foam::laserRay::laserRay
 (
-    const polyMesh& mesh,
     const point& position,
     const label celli,
     const vector& direction,
-    const scalar segmentLength,
-    const scalar power
+    const scalar power,
+    const vector& surfaceNormal,
+    const label nEvents
 )
 :
-    particle(mesh, position, celli),
-    p0_(position),
-    p1_(position + segmentLength*direction),
-    surfaceNormal_(Zero),
+    position_(position),
+    direction_(normalised(direction)),
+    cell_(celli),
+    surfaceNormal_(surfaceNormal),
     power_(power),
-    nEvents_(0),
+    nEvents_(nEvents),
     reflectedCell_(-1)
 {}
 
@@ -71,16 +82,15 @@ Foam::vector Foam::laserRay::surfaceNormal
     const label celli
 ) const
 {
-    const vector d = direction();
     vector n = td.normal[celli];
     if (magSqr(n) < 0.5)
     {
         n = surfaceNormal_;
     }
-    if (magSqr(n) < 0.5 || (d & n) >= 0)
+    if (magSqr(n) < 0.5 || (direction_ & n) >= 0)
     {
         // No interface met, or one seen from behind: normal incidence
-        n = -d;
+        n = -direction_;
     }
     return n;
 }
@@ -114,9 +124,7 @@ void Foam::laserRay::reflect
 {
     ++nEvents_;
     reflectedCell_ = celli;
-    p0_ = position();
-    p1_ = p0_ + td.segmentLength*normalised(d);
-    stepFraction() = 0;
+    direction_ = normalised(d);
 }
 
 
@@ -124,7 +132,7 @@ void Foam::laserRay::stop(trackingData& td, const bool asReflected)
 {
     (asReflected ? td.reflected : td.stopped) += power_;
     power_ = 0;
-    td.keepParticle = false;
+    cell_ = -1;
 }
 
 
@@ -132,27 +140,58 @@ void Foam::laserRay::leave(trackingData& td)
 {
     (nEvents_ > 0 ? td.reflected : td.escaped) += power_;
     power_ = 0;
-    td.keepParticle = false;
+    cell_ = -1;
 }
 
 
-bool Foam::laserRay::move
+Foam::label Foam::laserRay::exitFace
 (
-    Cloud<laserRay>& cloud,
-    trackingData& td,
-    const scalar
+    const polyMesh& mesh,
+    const label celli,
+    const point& x,
+    const vector& d,
+    scalar& distance
 )
 {
-    td.switchProcessor = false;
-    td.keepParticle = true;
+    const vectorField& Cf = mesh.faceCentres();
+    const vectorField& Sf = mesh.faceAreas();
+    const labelList& owner = mesh.faceOwner();
 
-    // Guards against a ray stuck on a face (zero-length steps)
-    label nStuck = 0;
-    const label maxStuck = 100;
-
-    while (td.keepParticle && !td.switchProcessor && stepFraction() < 1)
+    // Each face's plane through its centre, oriented out of the cell; the
+    // ray leaves through the first plane ahead of it
+    label exit = -1;
+    distance = GREAT;
+    for (const label facei : mesh.cells()[celli])
     {
-        const label celli = cell();
+        const vector outward = owner[facei] == celli ? Sf[facei] : -Sf[facei];
+        const scalar approach = d & outward;
+        if (approach > 0)
+        {
+            const scalar t = ((Cf[facei] - x) & outward)/approach;
+            if (t < distance)
+            {
+                distance = t;
+                exit = facei;
+            }
+        }
+    }
+
+    // A ray a rounding error outside the plane leaves at once
+    distance = max(distance, scalar(0));
+    return exit;
+}
+
+
+Foam::label Foam::laserRay::track(trackingData& td)
+{
+    const polyMesh& mesh = td.mesh;
+    const labelList& owner = mesh.faceOwner();
+    const labelList& neighbour = mesh.faceNeighbour();
+
+    label nStuck = 0;
+    while (cell_ >= 0)
+    {
+        const label celli = cell_;
         if (celli != reflectedCell_)
         {
             reflectedCell_ = -1;
@@ -162,73 +201,72 @@ bool Foam::laserRay::move
             surfaceNormal_ = td.normal[celli];
         }
 
-        const scalar f = 1 - stepFraction();
-        const vector s = f*(p1_ - p0_) - deviationFromMeshCentre();
-        const scalar sMag = mag(s);
-        const point x0 = position();
+        scalar toExit = 0;
+        const label facei = exitFace(mesh, celli, position_, direction_, toExit);
+        if (facei < 0)
+        {
+            // A degenerate cell with no face ahead
+            stop(td, false);
+            break;
+        }
 
         const scalar toInteraction =
             td.model.interactionDistance(*this, td, celli);
-        const bool interacts = toInteraction < sMag;
 
-        // Track up to the interaction, or to the face if that comes first;
-        // the stretch crossed counts before the ray passes the face (it
-        // may leave the domain there)
-        const scalar frac = interacts ? toInteraction/sMag : 1;
-        if (frac > 0)
+        if (toInteraction < toExit)
         {
-            trackToFace(frac*s, frac*f);
+            // Interacts inside the cell; the stretch up to there counts
+            position_ += toInteraction*direction_;
+            td.model.cross(*this, td, celli, toInteraction);
+            if (cell_ >= 0)
+            {
+                td.model.interact(*this, td, celli);
+            }
         }
-        const scalar ds = mag(position() - x0);
-        td.model.cross(*this, td, celli, ds);
+        else
+        {
+            // Crosses the cell; the stretch counts before the ray passes
+            // the face (it may leave the domain there)
+            position_ += toExit*direction_;
+            td.model.cross(*this, td, celli, toExit);
 
-        if (frac > 0 && onFace())
-        {
-            hitFace(frac*s, cloud, td);
-        }
-        else if (td.keepParticle && interacts)
-        {
-            td.model.interact(*this, td, celli);
+            nStuck = (toExit < td.stuckLength) ? nStuck + 1 : 0;
+            if (nStuck > maxStuckSteps)
+            {
+                stop(td, false);
+            }
+            else if (cell_ >= 0 && mesh.isInternalFace(facei))
+            {
+                cell_ = owner[facei] == celli ? neighbour[facei] : owner[facei];
+            }
+            else if (cell_ >= 0)
+            {
+                // A cyclic patch ends the ray as any other patch does,
+                // in a serial and a parallel run alike
+                const polyPatch& patch =
+                    mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(facei)];
+                if
+                (
+                    isA<processorPolyPatch>(patch)
+                 && !isA<processorCyclicPolyPatch>(patch)
+                )
+                {
+                    // The neighbour processor continues; cell labels are
+                    // local to a processor
+                    reflectedCell_ = -1;
+                    return facei;
+                }
+                leave(td);
+            }
         }
 
-        if (!interacts && ds < SMALL*td.segmentLength && ++nStuck > maxStuck)
-        {
-            stop(td, false);
-        }
-
-        if (td.keepParticle && power_ < td.powerCutoff)
+        if (cell_ >= 0 && power_ < td.powerCutoff)
         {
             stop(td, false);
         }
     }
 
-    return td.keepParticle;
-}
-
-
-void Foam::laserRay::hitProcessorPatch(Cloud<laserRay>&, trackingData& td)
-{
-    // Cell labels are local to the processor
-    reflectedCell_ = -1;
-    td.switchProcessor = true;
-}
-
-
-bool Foam::laserRay::hitPatch(Cloud<laserRay>&, trackingData& td)
-{
-    if (isA<processorPolyPatch>(mesh().boundaryMesh()[patch()]))
-    {
-        return false;
-    }
-
-    leave(td);
-    return true;
-}
-
-
-void Foam::laserRay::hitWallPatch(Cloud<laserRay>&, trackingData& td)
-{
-    leave(td);
+    return -1;
 }
 
 

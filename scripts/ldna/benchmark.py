@@ -258,6 +258,9 @@ def _only_time_info(case: Path) -> None:
 #: Monte-Carlo rays (the model's default, 10 000 a step)
 MONTE_CARLO_VARIANT = "laserMonteCarlo"
 
+#: The name of the reference variant: OpenFOAM's own solver
+REFERENCE_VARIANT = "compressibleInterFoam"
+
 
 def _monte_carlo_laser(options: str) -> str:
     """The fvOptions text with the Beer-Lambert laser's absorption model
@@ -288,24 +291,42 @@ def _compressible_inter_foam_case(scene: Path, destination: Path, start: Path) -
     return case
 
 
-def _time_per_step(case: Path, command: str, log_name: str, n_procs: int = 1,
-                   repeats: int = 1) -> float:
-    """Least time per step of ``repeats`` runs.
+@dataclass
+class _Variant:
+    """One timed run: the case, the solver, its ranks and, for ldnaFoam, the
+    fvOptions it runs with."""
 
-    The least, because the scatter between runs of one variant on a shared
-    virtual machine (measured: 0.062 and 0.084 s per step for the same
-    compressibleInterFoam run) only ever adds time.
+    case: Path
+    command: str
+    log_name: str
+    n_procs: int = 1
+    options: str | None = None
+
+
+def _least_times_per_step(variants: dict[str, _Variant], repeats: int) -> dict[str, float]:
+    """Least time per step of each variant over ``repeats`` rounds.
+
+    Each round runs every variant once, so that a slow spell of the shared
+    virtual machine falls on all variants of a round rather than on the
+    repeats of one variant.  The least, because that scatter (measured:
+    0.062 and 0.084 s per step for the same compressibleInterFoam run) only
+    ever adds time.
     """
-    if n_procs > 1:
-        run(case, "decomposePar -force", log_name="decomposePar")
-    times = []
+    for variant in variants.values():
+        if variant.n_procs > 1:
+            run(variant.case, "decomposePar -force", log_name="decomposePar")
+    times: dict[str, list[float]] = {name: [] for name in variants}
     for _ in range(repeats):
-        if n_procs > 1:
-            run_parallel(case, command, n_procs, log_name=log_name)
-        else:
-            run(case, command, log_name=log_name)
-        times.append(seconds_per_step(case))
-    return min(times)
+        for name, variant in variants.items():
+            if variant.options is not None:
+                (variant.case / "constant" / "fvOptions").write_text(variant.options)
+            if variant.n_procs > 1:
+                run_parallel(variant.case, variant.command, variant.n_procs,
+                             log_name=variant.log_name)
+            else:
+                run(variant.case, variant.command, log_name=variant.log_name)
+            times[name].append(seconds_per_step(variant.case))
+    return {name: min(values) for name, values in times.items()}
 
 
 def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_procs: int = 2,
@@ -345,31 +366,37 @@ def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_pro
 
     _fixed_steps(scene, steps, delta_t, float(start.name))
 
-    def ldna_with(names: list[str], log_name: str, n: int = 1,
-                  options: str = full_options) -> float:
-        (scene / "constant" / "fvOptions").write_text(options)
-        keep_blocks(scene / "constant" / "fvOptions", names)
-        return _time_per_step(scene, "ldnaFoam", log_name, n, repeats)
+    fv_options = scene / "constant" / "fvOptions"
 
-    no_effects = ldna_with([], "ldnaFoam.none")
+    def ldna_with(names: list[str], log_name: str, n: int = 1,
+                  options: str = full_options) -> _Variant:
+        fv_options.write_text(options)
+        keep_blocks(fv_options, names)
+        return _Variant(scene, "ldnaFoam", log_name, n, fv_options.read_text())
+
+    variants = {"none": ldna_with([], "ldnaFoam.none")}
     inter = _compressible_inter_foam_case(scene, scratch / "compressibleInterFoam", start)
-    inter_foam = _time_per_step(inter, "compressibleInterFoam", "compressibleInterFoam",
-                                repeats=repeats)
-    costs = [StepCost(name, ldna_with([name], f"ldnaFoam.{name}"), 0.0) for name in effects]
+    variants[REFERENCE_VARIANT] = _Variant(inter, "compressibleInterFoam",
+                                           "compressibleInterFoam")
+    for name in effects:
+        variants[name] = ldna_with([name], f"ldnaFoam.{name}")
     monte_carlo = _monte_carlo_laser(full_options)
     if "laser" in effects and monte_carlo != full_options:
-        costs.append(StepCost(MONTE_CARLO_VARIANT,
-                              ldna_with(["laser"], "ldnaFoam.laserMonteCarlo",
-                                        options=monte_carlo), 0.0))
-    for cost in costs:
-        cost.ratio = cost.seconds_per_step / no_effects
-    serial = ldna_with(effects, "ldnaFoam.all")
-    parallel = ldna_with(effects, "ldnaFoam.parallel", n_procs)
+        variants[MONTE_CARLO_VARIANT] = ldna_with(["laser"], "ldnaFoam.laserMonteCarlo",
+                                                  options=monte_carlo)
+    variants["all"] = ldna_with(effects, "ldnaFoam.all")
+    variants["parallel"] = ldna_with(effects, "ldnaFoam.parallel", n_procs)
+
+    least = _least_times_per_step(variants, repeats)
+    no_effects = least["none"]
+    costs = [StepCost(name, least[name], least[name] / no_effects)
+             for name in variants if name in effects or name == MONTE_CARLO_VARIANT]
     return SolverCosts(level=level, cells=cell_count(scene), steps=steps, delta_t=delta_t,
                        start_time=float(start.name), ldna_no_effects=no_effects,
-                       compressible_inter_foam=inter_foam,
-                       effects=costs, all_effects=serial, template_delta_t=template_delta_t,
-                       serial_all_effects=serial, parallel_all_effects=parallel,
+                       compressible_inter_foam=least[REFERENCE_VARIANT],
+                       effects=costs, all_effects=least["all"],
+                       template_delta_t=template_delta_t,
+                       serial_all_effects=least["all"], parallel_all_effects=least["parallel"],
                        n_procs=n_procs, repeats=repeats)
 
 

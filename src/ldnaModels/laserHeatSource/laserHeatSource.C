@@ -28,6 +28,14 @@ namespace
 // A ray is stopped below this share of its initial power
 const Foam::scalar rayPowerCutoff = 1e-9;
 
+// Rays start this share of the mesh's bounding-box diagonal inside the box,
+// or before the first cell that acts on them
+const Foam::scalar startMargin = 1e-9;
+
+// Bins across the beam's width (each way) of the map of where the rays
+// start: finer than the cells of a process zone for beams of a few mm
+const Foam::label nStartBins = 64;
+
 // The columns of the power table
 const Foam::wordList powerColumns
 ({
@@ -70,6 +78,87 @@ void Foam::fv::laserHeatSource::readCoeffs()
 }
 
 
+Foam::scalarList Foam::fv::laserHeatSource::startDepths
+(
+    const point& target,
+    const vector& d,
+    const vector& e1,
+    const vector& e2,
+    const scalar extent,
+    const scalarField& alpha,
+    const vectorField& normal
+) const
+{
+    const vectorField& C = mesh_.cellCentres();
+    const scalarField& radius = tracer_.cells().radius();
+
+    // Bins of the columns [i0, i1] x [j0, j1] a sphere at (a, b) of radius
+    // r overlaps; false if it misses the map
+    const auto binRange = [&]
+    (
+        const scalar a, const scalar b, const scalar r,
+        label& i0, label& i1, label& j0, label& j1
+    )
+    {
+        if (mag(a) > extent + r || mag(b) > extent + r)
+        {
+            return false;
+        }
+        i0 = startBin(a - r, extent);
+        i1 = startBin(a + r, extent);
+        j0 = startBin(b - r, extent);
+        j1 = startBin(b + r, extent);
+        return true;
+    };
+
+    scalarList depths(nStartBins*nStartBins, GREAT);
+    forAll(C, celli)
+    {
+        if (!absorption_->acts(alpha[celli]) && magSqr(normal[celli]) < 0.5)
+        {
+            continue;
+        }
+        const vector fromTarget = C[celli] - target;
+        label i0, i1, j0, j1;
+        if
+        (
+            !binRange
+            (
+                fromTarget & e1, fromTarget & e2, radius[celli],
+                i0, i1, j0, j1
+            )
+        )
+        {
+            continue;
+        }
+        const scalar depth = (C[celli] & d) - radius[celli];
+        for (label i = i0; i <= i1; ++i)
+        {
+            for (label j = j0; j <= j1; ++j)
+            {
+                scalar& binDepth = depths[i*nStartBins + j];
+                binDepth = min(binDepth, depth);
+            }
+        }
+    }
+
+    Pstream::listCombineGather(depths, minEqOp<scalar>());
+    Pstream::listCombineScatter(depths);
+    return depths;
+}
+
+
+Foam::label Foam::fv::laserHeatSource::startBin
+(
+    const scalar x,
+    const scalar extent
+)
+{
+    const label bin(floor((x + extent)*nStartBins/(2*extent)));
+    return min(max(bin, 0), nStartBins - 1);
+}
+
+
 void Foam::fv::laserHeatSource::update()
 {
     if (updatedTimeIndex_ == mesh_.time().timeIndex())
@@ -104,6 +193,30 @@ void Foam::fv::laserHeatSource::update()
     DynamicList<scalar> shares;
     absorption_->rays(beam_, mesh_.time().timeIndex(), across, shares);
 
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+    const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
+    // Interface normals out of the metal, if the absorption model uses them
+    vectorField normal(mesh_.nCells(), Zero);
+    if (absorption_->usesSurfaceNormal())
+    {
+        normal = -metalInterfaceNormal(fvc::grad(alpha)());
+    }
+
+    // Nothing happens to a ray before the first cell in its way that the
+    // absorption model acts on (or that holds an interface): each ray
+    // starts just before the first such cell over its bin of a map across
+    // the beam, not at the top of the mesh
+    scalar extent = SMALL*bounds.mag();
+    for (const vector2D& offset : across)
+    {
+        extent = max(extent, mag(offset));
+    }
+    const scalarList depths
+    (
+        startDepths(c, d, e1, e2, extent, alpha.primitiveField(), normal)
+    );
+
     DynamicList<laserRay> rays(across.size());
     scalar started = 0;
     forAll(across, rayi)
@@ -116,7 +229,19 @@ void Foam::fv::laserHeatSource::update()
         {
             continue;
         }
-        const point inside = entry + 1e-9*bounds.mag()*d;
+        point inside = entry + startMargin*bounds.mag()*d;
+        const scalar depth =
+            depths
+            [
+                startBin(across[rayi].x(), extent)*nStartBins
+              + startBin(across[rayi].y(), extent)
+            ]
+          - startMargin*bounds.mag();
+        const point first = onAxis + (depth - (onAxis & d))*d;
+        if ((first & d) > (inside & d) && bounds.contains(first))
+        {
+            inside = first;
+        }
         const label celli = tracer_.startCell(inside);
         if (celli < 0)
         {
@@ -129,16 +254,6 @@ void Foam::fv::laserHeatSource::update()
     }
     reduce(started, sumOp<scalar>());
 
-    const volScalarField& alpha =
-        mesh_.lookupObject<volScalarField>(alphaName_);
-    const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
-    // Interface normals out of the metal, if the absorption model uses them
-    vectorField normal(mesh_.nCells(), Zero);
-    if (absorption_->usesSurfaceNormal())
-    {
-        normal = -metalInterfaceNormal(fvc::grad(alpha)());
-    }
-
     // Random numbers of scattering, different per processor
     Random scatterGen(mesh_.time().timeIndex() + 7919*Pstream::myProcNo());
 
@@ -146,6 +261,7 @@ void Foam::fv::laserHeatSource::update()
     laserRay::trackingData td
     (
         mesh_,
+        tracer_.cells(),
         absorption_(),
         alpha.primitiveField(),
         T.primitiveField(),

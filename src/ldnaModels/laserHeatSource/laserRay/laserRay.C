@@ -23,6 +23,7 @@ const Foam::label maxStuckSteps = 100;
 Foam::laserRay::trackingData::trackingData
 (
     const polyMesh& mesh,
+    const convexCells& cells,
     const laserAbsorptionModel& model,
     const scalarField& alpha,
     const scalarField& T,
@@ -34,6 +35,7 @@ Foam::laserRay::trackingData::trackingData
 )
 :
     mesh(mesh),
+    cells(cells),
     model(model),
     alpha(alpha),
     T(T),
@@ -144,49 +146,9 @@ void Foam::laserRay::leave(trackingData& td)
 }
 
 
-Foam::label Foam::laserRay::exitFace
-(
-    const polyMesh& mesh,
-    const label celli,
-    const point& x,
-    const vector& d,
-    scalar& distance
-)
-{
-    const vectorField& Cf = mesh.faceCentres();
-    const vectorField& Sf = mesh.faceAreas();
-    const labelList& owner = mesh.faceOwner();
-
-    // Each face's plane through its centre, oriented out of the cell; the
-    // ray leaves through the first plane ahead of it
-    label exit = -1;
-    distance = GREAT;
-    for (const label facei : mesh.cells()[celli])
-    {
-        const vector outward = owner[facei] == celli ? Sf[facei] : -Sf[facei];
-        const scalar approach = d & outward;
-        if (approach > 0)
-        {
-            const scalar t = ((Cf[facei] - x) & outward)/approach;
-            if (t < distance)
-            {
-                distance = t;
-                exit = facei;
-            }
-        }
-    }
-
-    // A ray a rounding error outside the plane leaves at once
-    distance = max(distance, scalar(0));
-    return exit;
-}
-
-
 Foam::label Foam::laserRay::track(trackingData& td)
 {
-    const polyMesh& mesh = td.mesh;
-    const labelList& owner = mesh.faceOwner();
-    const labelList& neighbour = mesh.faceNeighbour();
+    const polyBoundaryMesh& patches = td.mesh.boundaryMesh();
 
     label nStuck = 0;
     while (cell_ >= 0)
@@ -202,8 +164,9 @@ Foam::label Foam::laserRay::track(trackingData& td)
         }
 
         scalar toExit = 0;
-        const label facei = exitFace(mesh, celli, position_, direction_, toExit);
-        if (facei < 0)
+        const convexCells::facePlane* exit =
+            td.cells.exit(celli, position_, direction_, toExit);
+        if (!exit)
         {
             // A degenerate cell with no face ahead
             stop(td, false);
@@ -235,16 +198,16 @@ Foam::label Foam::laserRay::track(trackingData& td)
             {
                 stop(td, false);
             }
-            else if (cell_ >= 0 && mesh.isInternalFace(facei))
+            else if (cell_ >= 0 && exit->next >= 0)
             {
-                cell_ = owner[facei] == celli ? neighbour[facei] : owner[facei];
+                cell_ = exit->next;
             }
             else if (cell_ >= 0)
             {
                 // A cyclic patch ends the ray as any other patch does,
                 // in a serial and a parallel run alike
                 const polyPatch& patch =
-                    mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(facei)];
+                    patches[patches.whichPatch(exit->face)];
                 if
                 (
                     isA<processorPolyPatch>(patch)
@@ -254,7 +217,7 @@ Foam::label Foam::laserRay::track(trackingData& td)
                     // The neighbour processor continues; cell labels are
                     // local to a processor
                     reflectedCell_ = -1;
-                    return facei;
+                    return exit->face;
                 }
                 leave(td);
             }

@@ -27,6 +27,7 @@ const Foam::scalar boundsMargin = 1e-6;
 Foam::rayTracer::rayTracer(const polyMesh& mesh)
 :
     mesh_(mesh),
+    cells_(mesh),
     localBounds_(mesh.points(), false),
     lastStart_(Zero),
     lastStartCell_(-1)
@@ -63,9 +64,9 @@ Foam::label Foam::rayTracer::walk
     for (label n = 0; n < maxWalkCells; ++n)
     {
         scalar toExit = 0;
-        const label facei =
-            laserRay::exitFace(mesh_, celli, from + travelled*d, d, toExit);
-        if (facei < 0)
+        const convexCells::facePlane* exit =
+            cells_.exit(celli, from + travelled*d, d, toExit);
+        if (!exit)
         {
             return -1;
         }
@@ -73,13 +74,12 @@ Foam::label Foam::rayTracer::walk
         {
             return celli;
         }
-        if (!mesh_.isInternalFace(facei))
+        if (exit->next < 0)
         {
             return -1;
         }
         travelled += toExit;
-        const label own = mesh_.faceOwner()[facei];
-        celli = (own == celli) ? mesh_.faceNeighbour()[facei] : own;
+        celli = exit->next;
     }
     return -1;
 }

@@ -29,8 +29,9 @@ from typing import Protocol
 import numpy as np
 
 from . import meshing
-from .foamcase import (BALANCES, copy_case, cpu_seconds, dictionary_scalar, latest_run_table, read_balances,
-                       run, run_parallel, time_directories)
+from .case import Case
+from .foamcase import (BALANCES, cpu_seconds, dictionary_scalar, read_balances, run,
+                       time_directories)
 from .foamdict import read_scalars, set_entry
 from .stefan import NeumannSolution, front_position
 
@@ -206,20 +207,18 @@ class StartState:
                    for t in (float(d.name) for d in time_directories(self.case))):
             raise ValueError(f"{self.case}: no reconstructed time {self.time:g} to start from")
 
-    def map_onto(self, case: Path) -> None:
+    def map_onto(self, case: Case) -> None:
         """Map the state onto ``case``'s mesh (volume-weighted) at the state's time.
 
         The member starts at that time (the droplets' and the laser's phase
         follow), with the state's fields; quantities the mapping cannot carry
         (the time step) start from the member's controlDict.
         """
-        control = case / "system" / "controlDict"
-        set_entry(control, "startFrom", "startTime")
-        set_entry(control, "startTime", f"{self.time:g}")
-        start = case / f"{self.time:g}"
-        shutil.copytree(case / "0", start)
-        run(case, f"mapFields {self.case.resolve()} -consistent -sourceTime {self.time:g}",
-            log_name="mapFields")
+        case.set("system/controlDict", "startFrom", "startTime")
+        case.set("system/controlDict", "startTime", f"{self.time:g}")
+        shutil.copytree(case / "0", case / f"{self.time:g}")
+        case.run(f"mapFields {self.case.resolve()} -consistent -sourceTime {self.time:g}",
+                 log_name="mapFields")
 
 
 def run_member(template: Path, directory: Path, scene: Scene, member: Member,
@@ -228,45 +227,41 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     """Copy, mesh and run one member; fill in its cost and outputs."""
     if directory.exists():
         shutil.rmtree(directory)
-    case = copy_case(template, directory)
-    member.cell_size_mm = scene.set_resolution(case, member.level)
-    control = case / "system" / "controlDict"
+    case = Case.copy_of(template, directory)
+    member.cell_size_mm = scene.set_resolution(case.path, member.level)
+    control = "system/controlDict"
     if end_time is not None:
-        set_entry(control, "endTime", f"{end_time:g}")
-    member.end_time = dictionary_scalar(case, "system/controlDict", "endTime")
+        case.set(control, "endTime", f"{end_time:g}")
+    member.end_time = case.scalar(control, "endTime")
     member.start_time = start.time if start else 0.0
     if not member.end_time > member.start_time:
         raise ValueError(f"end time {member.end_time:g} s is not after the start "
                          f"{member.start_time:g} s")
     # The end time is written (and measured there)
-    set_entry(control, "writeInterval", f"{member.end_time - member.start_time:g}")
+    case.set(control, "writeInterval", f"{member.end_time - member.start_time:g}")
     if member.max_co is not None:
-        set_entry(control, "maxCo", f"{member.max_co:g}")
-        set_entry(control, "maxAlphaCo", f"{member.max_co:g}")
-    scene.prepare(case)
+        case.set(control, "maxCo", f"{member.max_co:g}")
+        case.set(control, "maxAlphaCo", f"{member.max_co:g}")
+    scene.prepare(case.path)
     if start:
         start.map_onto(case)
-    member.cells = meshing.cell_count(case)
+    member.cells = case.cells
 
     member.n_procs = n_procs
     if n_procs > 1:
-        set_entry(case / "system" / "decomposeParDict", "numberOfSubdomains", str(n_procs))
-        run(case, "decomposePar -force")
-    start = time.perf_counter()
-    if n_procs > 1:
-        run_parallel(case, "ldnaFoam", n_procs)
-    else:
-        run(case, "ldnaFoam")
-    member.wall_time = time.perf_counter() - start
+        case.decompose(n_procs)
+    began = time.perf_counter()
+    case.run("ldnaFoam", n_procs)
+    member.wall_time = time.perf_counter() - began
     try:
-        member.cpu_time = cpu_seconds(case)
+        member.cpu_time = cpu_seconds(case.path)
     except FileNotFoundError:
         member.cpu_time = None
     if n_procs > 1:
-        run(case, "reconstructPar -latestTime")
+        case.reconstruct()
     # Rows of the run's balance table: the initial state and one per step
-    member.steps = len(latest_run_table(case, *BALANCES)) - 1
-    member.outputs = scene.outputs(case)
+    member.steps = len(case.latest_table(*BALANCES)) - 1
+    member.outputs = scene.outputs(case.path)
     return member
 
 

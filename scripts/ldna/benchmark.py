@@ -27,10 +27,9 @@ from pathlib import Path
 import numpy as np
 from foamlib import FoamFieldFile
 
-from .foamcase import (PROJECT_DIR, TIME_INFO, copy_case, latest_run_table, read_balances, run,
-                       run_parallel, time_directories)
-from .foamdict import block_names, keep_blocks, read_scalars, remove_blocks, set_entry
-from .meshing import cell_count, mesh_case
+from .case import Case
+from .foamcase import PROJECT_DIR
+from .foamdict import block_names, keep_blocks, read_scalars, remove_blocks
 
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
 
@@ -67,15 +66,6 @@ laser
 """
 
 
-def seconds_per_step(case: Path) -> float:
-    """Mean CPU time per step of the case's latest run (OpenFOAM's timeInfo
-    table), without the first step (start-up)."""
-    times = latest_run_table(case, *TIME_INFO)["cpuTime"]
-    if len(times) < 3:
-        raise RuntimeError(f"too few steps in {case}")
-    return float(np.diff(times)[1:].mean())
-
-
 def laser_cost(level: int = 1, steps: int = 20, delta_t: float = 1e-4,
                work_dir: Path | None = None) -> list[StepCost]:
     """Time per step of the template with no laser and with each laser model.
@@ -85,21 +75,21 @@ def laser_cost(level: int = 1, steps: int = 20, delta_t: float = 1e-4,
     benchmark laser; the ratios show what the laser adds.
     """
     scratch = Path(work_dir or tempfile.mkdtemp(prefix="ldna-bench-"))
-    case = copy_case(TEMPLATE, scratch / "ldna")
-    set_entry(case / "system" / "caseParameters", "level", str(level))
+    case = Case.copy_of(TEMPLATE, scratch / "ldna")
+    case.set("system/caseParameters", "level", str(level))
     _fixed_steps(case, steps, delta_t)
-    mesh_case(case)
-    run(case, "setFields")
+    case.mesh()
+    case.run("setFields")
 
-    length = read_scalars(case / "system" / "caseParameters")["length"]
-    remove_blocks(case / "constant" / "fvOptions", ["laser"])
-    base_options = (case / "constant" / "fvOptions").read_text()
+    length = read_scalars(case / "system/caseParameters")["length"]
+    remove_blocks(case / "constant/fvOptions", ["laser"])
+    base_options = (case / "constant/fvOptions").read_text()
     costs: list[StepCost] = []
     for variant in ("none", *LASER_MODELS):
         options = base_options + ("" if variant == "none" else laser_entry(variant, length))
-        (case / "constant" / "fvOptions").write_text(options)
-        run(case, "ldnaFoam", log_name=f"ldnaFoam.{variant}")
-        costs.append(StepCost(variant, seconds_per_step(case), 0.0))
+        (case / "constant/fvOptions").write_text(options)
+        case.run(log_name=f"ldnaFoam.{variant}")
+        costs.append(StepCost(variant, case.seconds_per_step(), 0.0))
 
     reference = costs[0].seconds_per_step
     for cost in costs:
@@ -222,15 +212,15 @@ class SolverCosts:
         }
 
 
-def _fixed_steps(case: Path, steps: int, delta_t: float, start_time: float = 0.0) -> None:
-    control = case / "system" / "controlDict"
-    set_entry(control, "adjustTimeStep", "no")
-    set_entry(control, "deltaT", f"{delta_t:.6g}")
-    set_entry(control, "startTime", f"{start_time:g}")
-    set_entry(control, "endTime", f"{start_time + steps * delta_t:.9g}")
-    set_entry(control, "startFrom", "startTime")
+def _fixed_steps(case: Case, steps: int, delta_t: float, start_time: float = 0.0) -> None:
+    control = "system/controlDict"
+    case.set(control, "adjustTimeStep", "no")
+    case.set(control, "deltaT", f"{delta_t:.6g}")
+    case.set(control, "startTime", f"{start_time:g}")
+    case.set(control, "endTime", f"{start_time + steps * delta_t:.9g}")
+    case.set(control, "startFrom", "startTime")
     # No write: every variant starts from the same initial fields
-    set_entry(control, "writeInterval", "1e3")
+    case.set(control, "writeInterval", "1e3")
 
 
 #: The only function object of the timed runs: the CPU time of each step
@@ -248,8 +238,8 @@ functions
 """
 
 
-def _only_time_info(case: Path) -> None:
-    control = case / "system" / "controlDict"
+def _only_time_info(case: Case) -> None:
+    control = case / "system/controlDict"
     remove_blocks(control, ["functions"])
     control.write_text(control.read_text() + TIME_INFO_FUNCTIONS)
 
@@ -269,25 +259,24 @@ def _monte_carlo_laser(options: str) -> str:
     return re.sub(r"(absorptionModel\s+)beerLambert\s*;", r"\1monteCarlo;", text)
 
 
-def _compressible_inter_foam_case(scene: Path, destination: Path, start: Path) -> Path:
+def _compressible_inter_foam_case(scene: Case, destination: Path, start: Path) -> Case:
     """The scene's mesh, fields (at the ``start`` time directory) and
     numerics set up for compressibleInterFoam."""
-    case = copy_case(scene, destination)
-    shutil.copytree(scene / "constant" / "polyMesh", case / "constant" / "polyMesh")
+    case = Case.copy_of(scene, destination)
+    shutil.copytree(scene / "constant/polyMesh", case / "constant/polyMesh")
     shutil.copytree(start, case / start.name)
     # The same metal and flow at the ambient temperature: compressibleInterFoam
     # has no melting, and its temperature equation fails on the 2100 K
     # droplets landing on cold metal within ten steps (negative temperature);
     # its step costs one temperature solve whatever the temperatures are
-    ambient = read_scalars(scene / "system" / "caseParameters")["ambientTemperature"]
-    FoamFieldFile(case / start.name / "T").internal_field = ambient
+    ambient = read_scalars(scene / "system/caseParameters")["ambientTemperature"]
+    FoamFieldFile(case / f"{start.name}/T").internal_field = ambient
     for name, text in COMPRESSIBLE_INTER_FOAM_FILES.items():
         (case / name).write_text(text)
-    (case / "constant" / "fvOptions").unlink(missing_ok=True)
+    (case / "constant/fvOptions").unlink(missing_ok=True)
     for entry, value in COMPRESSIBLE_INTER_FOAM_SCHEMES.items():
-        run(case, f"foamDictionary -entry '{entry}' -set '{value}' system/fvSchemes",
-            log_name="foamDictionary")
-    set_entry(case / "system" / "controlDict", "application", "compressibleInterFoam")
+        case.set("system/fvSchemes", entry, value)
+    case.set("system/controlDict", "application", "compressibleInterFoam")
     return case
 
 
@@ -296,7 +285,7 @@ class _Variant:
     """One timed run: the case, the solver, its ranks and, for ldnaFoam, the
     fvOptions it runs with."""
 
-    case: Path
+    case: Case
     command: str
     log_name: str
     n_procs: int = 1
@@ -314,18 +303,14 @@ def _least_times_per_step(variants: dict[str, _Variant], repeats: int) -> dict[s
     """
     for variant in variants.values():
         if variant.n_procs > 1:
-            run(variant.case, "decomposePar -force", log_name="decomposePar")
+            variant.case.decompose()
     times: dict[str, list[float]] = {name: [] for name in variants}
     for _ in range(repeats):
         for name, variant in variants.items():
             if variant.options is not None:
-                (variant.case / "constant" / "fvOptions").write_text(variant.options)
-            if variant.n_procs > 1:
-                run_parallel(variant.case, variant.command, variant.n_procs,
-                             log_name=variant.log_name)
-            else:
-                run(variant.case, variant.command, log_name=variant.log_name)
-            times[name].append(seconds_per_step(variant.case))
+                (variant.case / "constant/fvOptions").write_text(variant.options)
+            variant.case.run(variant.command, variant.n_procs, log_name=variant.log_name)
+            times[name].append(variant.case.seconds_per_step())
     return {name: min(values) for name, values in times.items()}
 
 
@@ -339,34 +324,33 @@ def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_pro
     the template's mean step over the second half of that run from its state.
     """
     scratch = Path(work_dir or tempfile.mkdtemp(prefix="ldna-bench-"))
-    scene = copy_case(TEMPLATE, scratch / "ldna")
-    set_entry(scene / "system" / "caseParameters", "level", str(level))
+    scene = Case.copy_of(TEMPLATE, scratch / "ldna")
+    scene.set("system/caseParameters", "level", str(level))
     # compressibleInterFoam has no conductivity field for the substrate
     # walls' heat-loss condition: adiabatic walls in every variant
-    run(scene, "foamDictionary -entry boundaryField/substrateWalls -set "
-               "'{ type zeroGradient; }' 0/T", log_name="foamDictionary")
+    scene.set("0/T", "boundaryField/substrateWalls", "{ type zeroGradient; }")
     _only_time_info(scene)
-    mesh_case(scene)
-    run(scene, "setFields")
-    full_options = (scene / "constant" / "fvOptions").read_text()
-    effects = block_names(scene / "constant" / "fvOptions")
+    scene.mesh()
+    scene.run("setFields")
+    full_options = (scene / "constant/fvOptions").read_text()
+    effects = block_names(scene / "constant/fvOptions")
 
     # The developed state every variant starts from, and the template's own
     # time step on the way there
-    adaptive = copy_case(scene, scratch / "adaptive")
-    shutil.copytree(scene / "constant" / "polyMesh", adaptive / "constant" / "polyMesh")
-    set_entry(adaptive / "system" / "controlDict", "endTime", f"{start_time:g}")
-    set_entry(adaptive / "system" / "controlDict", "writeInterval", f"{start_time:g}")
-    run(adaptive, "ldnaFoam")
-    times = read_balances(adaptive)["time"]
+    adaptive = Case.copy_of(scene, scratch / "adaptive")
+    shutil.copytree(scene / "constant/polyMesh", adaptive / "constant/polyMesh")
+    adaptive.set("system/controlDict", "endTime", f"{start_time:g}")
+    adaptive.set("system/controlDict", "writeInterval", f"{start_time:g}")
+    adaptive.run()
+    times = adaptive.balances()["time"]
     template_delta_t = float(np.diff(times)[len(times) // 2:].mean())
-    start = time_directories(adaptive)[-1]
+    start = adaptive.times[-1]
     shutil.copytree(start, scene / start.name)
     delta_t = float(f"{template_delta_t:.3g}")
 
     _fixed_steps(scene, steps, delta_t, float(start.name))
 
-    fv_options = scene / "constant" / "fvOptions"
+    fv_options = scene / "constant/fvOptions"
 
     def ldna_with(names: list[str], log_name: str, n: int = 1,
                   options: str = full_options) -> _Variant:
@@ -391,7 +375,7 @@ def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_pro
     no_effects = least["none"]
     costs = [StepCost(name, least[name], least[name] / no_effects)
              for name in variants if name in effects or name == MONTE_CARLO_VARIANT]
-    return SolverCosts(level=level, cells=cell_count(scene), steps=steps, delta_t=delta_t,
+    return SolverCosts(level=level, cells=scene.cells, steps=steps, delta_t=delta_t,
                        start_time=float(start.name), ldna_no_effects=no_effects,
                        compressible_inter_foam=least[REFERENCE_VARIANT],
                        effects=costs, all_effects=least["all"],

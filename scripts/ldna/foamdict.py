@@ -32,14 +32,19 @@ def read_scalars(path: Path) -> dict[str, float]:
 
 
 def set_entry(path: Path, keyword: str, value: str) -> None:
-    """Replace the value of a top-level entry ``keyword value;`` in place."""
+    """Replace the value of a top-level entry ``keyword value;`` in place
+    (one outside every sub-dictionary); comments and macros stay."""
     path = Path(path)
     text = path.read_text()
+    depth_at = list(accumulate((c == "{") - (c == "}") for c in _COMMENT.sub(
+        lambda m: " " * len(m.group(0)), text)))
     pattern = re.compile(rf"^(\s*{re.escape(keyword)}\s+)[^;]*;", re.MULTILINE)
-    new_text, count = pattern.subn(lambda m: f"{m.group(1)}{value};", text, count=1)
-    if count != 1:
-        raise KeyError(f"entry '{keyword}' not found in {path}")
-    path.write_text(new_text)
+    for match in pattern.finditer(text):
+        if depth_at[match.start()] == 0:
+            path.write_text(text[:match.start()] + f"{match.group(1)}{value};"
+                            + text[match.end():])
+            return
+    raise KeyError(f"entry '{keyword}' not found in {path}")
 
 
 def _top_level_blocks(text: str) -> list[tuple[str, int, int]]:

@@ -2,10 +2,11 @@
 
 Reads a case (reconstructed or decomposed) with pyvista and
 
-- computes the bead and melt-pool metrics with the definitions of the
-  ``meltPoolMetrics`` function object (src/ldnaFunctionObjects): pool length
-  and width, penetration, pool volume, bead width and height, bead and fused
-  areas, dilution, peak metal temperature;
+- takes the bead and melt-pool metrics from the ``meltPoolMetrics``
+  function object (src/ldnaFunctionObjects), which it runs at the time it
+  reads with OpenFOAM's ``postProcess``: pool length and width,
+  penetration, pool volume, bead width and height, bead and fused areas,
+  dilution, peak metal temperature; and adds the bead's wetting angle;
 - renders, without a display, the pictures a welding engineer looks at:
   the free surface (alpha = 0.5) coloured by temperature, a transverse
   section through the pool's largest section (without a pool: the bead
@@ -19,6 +20,7 @@ from __future__ import annotations
 
 import os
 import re
+import shutil
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -115,23 +117,17 @@ def _largest_slice(areas: np.ndarray) -> int:
     return int(np.nonzero(areas >= (1 - SLICE_AREA_TOLERANCE) * areas.max())[0][-1])
 
 
-def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
-            bead_section: float | None = None,
-            metal_threshold: float = METAL_THRESHOLD) -> BeadMetrics:
-    """Bead and melt-pool metrics of a grid with cell fields T and alpha.metal.
+def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
+                       metal_threshold: float = METAL_THRESHOLD) -> float:
+    """Secant angle [deg] of the bead's flanks at its toes, in the transverse
+    slice at ``bead_section`` [m] (0 without bead there).
 
-    The definitions are those of the meltPoolMetrics function object (see its
-    header): extents from the cells' bounding boxes, transverse slices one
-    shortest cell long along the weld, fused area the largest molten area
-    below the surface in any slice (at ``fused_section``), bead measured in
-    the slice of largest bead area unless ``bead_section`` [m] is given; of
-    slices equal to round-off, the most downstream.
+    The slices are the meltPoolMetrics function object's: one shortest cell
+    long along the weld, from the mesh's upstream end.
     """
     low, high = _cell_bounds(grid)
     centre = 0.5 * (low + high)
     span = high - low
-    volume = np.asarray(grid.compute_cell_sizes(length=False, area=False)["Volume"])
-    temperature = np.asarray(grid.cell_data["T"])
     alpha = np.asarray(grid.cell_data["alpha.metal"])
 
     slice_length = span[:, 0].min()
@@ -141,43 +137,77 @@ def metrics(grid, fusion_temperature_: float, surface_height: float = 0.0,
     def slice_of(w: np.ndarray) -> np.ndarray:
         return np.clip(np.floor((w - origin) / slice_length).astype(int), 0, n_slices - 1)
 
-    slices = slice_of(centre[:, 0])
-    slice_area = volume / span[:, 0]
-    is_metal = alpha >= metal_threshold
-    molten = is_metal & (temperature >= fusion_temperature_)
-    below = centre[:, 2] < surface_height
+    in_slice = (centre[:, 2] >= surface_height) & (
+        slice_of(centre[:, 0]) == slice_of(np.array([bead_section]))[0])
+    in_bead = in_slice & (alpha >= metal_threshold)
+    if not in_bead.any():
+        return 0.0
+    return wetting_angle(centre[in_slice, 1], (alpha * span[:, 2])[in_slice],
+                         low[in_bead, 1].min(), high[in_bead, 1].max())
 
-    result = BeadMetrics()
-    if is_metal.any():
-        result.peak_temperature = float(temperature[is_metal].max())
-    if molten.any():
-        result.pool_length = float(high[molten, 0].max() - low[molten, 0].min())
-        result.pool_width = float(high[molten, 1].max() - low[molten, 1].min())
-        result.pool_volume = float((alpha * volume)[molten].sum())
-    if (molten & below).any():
-        result.penetration = float(surface_height - low[molten & below, 2].min())
 
-    fused = np.bincount(slices[molten & below], weights=slice_area[molten & below],
-                        minlength=n_slices)
-    bead = np.bincount(slices[~below], weights=(alpha * slice_area)[~below],
-                       minlength=n_slices)
-    result.fused_area = float(fused.max())
-    result.fused_section = float(origin + (_largest_slice(fused) + 0.5) * slice_length)
-    bead_slice = int(slice_of(np.array([bead_section]))[0]) if bead_section is not None \
-        else _largest_slice(bead)
-    result.bead_section = float(origin + (bead_slice + 0.5) * slice_length)
-    result.bead_area = float(bead[bead_slice])
+#: The function object ``ldna post`` runs at the time it reads (its table:
+#: postProcessing/<name>/<time>/meltPoolMetrics.dat)
+POST_FUNCTION = "postMeltPoolMetrics"
 
-    in_bead = is_metal & ~below & (slices == bead_slice)
-    if in_bead.any():
-        result.bead_width = float(high[in_bead, 1].max() - low[in_bead, 1].min())
-        result.bead_height = float(high[in_bead, 2].max() - surface_height)
-        in_slice = ~below & (slices == bead_slice)
-        result.wetting_angle = wetting_angle(centre[in_slice, 1], (alpha * span[:, 2])[in_slice],
-                                             low[in_bead, 1].min(), high[in_bead, 1].max())
-    if result.fused_area + result.bead_area > 0:
-        result.dilution = result.fused_area / (result.fused_area + result.bead_area)
-    return result
+
+def _time_name(case: Path, time: float) -> tuple[str, int]:
+    """The written time directory nearest ``time`` and the ranks to read it
+    with (1: reconstructed; else the processor directories)."""
+    from .foamcase import time_directories
+
+    processors = sorted(case.glob("processor[0-9]*"))
+    reconstructed = [t for t in time_directories(case) if (t / "alpha.metal").exists()]
+    directories = reconstructed or (time_directories(processors[0]) if processors else [])
+    if not directories:
+        raise FileNotFoundError(f"no written time in {case}")
+    nearest = min(directories, key=lambda t: abs(float(t.name) - time))
+    return nearest.name, 1 if reconstructed else len(processors)
+
+
+def function_object_metrics(case: Path, time: float, surface_height: float = 0.0,
+                            bead_section: float | None = None,
+                            fusion_temperature_: float | None = None) -> BeadMetrics:
+    """The meltPoolMetrics function object's metrics of ``case`` at the written
+    time nearest ``time``, run there with OpenFOAM's postProcess (in
+    parallel on a case that is only decomposed)."""
+    from .foamcase import run, run_parallel
+
+    case = Path(case)
+    time_name, n_procs = _time_name(case, time)
+    entries = {"surfaceHeight": f"{surface_height:.12g}"}
+    if bead_section is not None:
+        entries["beadSection"] = f"{bead_section:.12g}"
+    if fusion_temperature_ is not None:
+        entries["fusionTemperature"] = f"{fusion_temperature_:.12g}"
+    settings = "\n".join(f"        {key:<18}{value};" for key, value in entries.items())
+    (case / "system" / POST_FUNCTION).write_text(f"""FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       dictionary;
+    object      {POST_FUNCTION};
+}}
+
+functions
+{{
+    {POST_FUNCTION}
+    {{
+        type              meltPoolMetrics;
+        libs              ("libldnaFunctionObjects.so");
+{settings}
+    }}
+}}
+""")
+    shutil.rmtree(case / "postProcessing" / POST_FUNCTION / time_name, ignore_errors=True)
+    command = (f"postProcess -dict system/{POST_FUNCTION} -fields '(T alpha.metal)' "
+               f"-time {time_name}")
+    if n_procs > 1:
+        run_parallel(case, command, n_procs, log_name=POST_FUNCTION)
+    else:
+        run(case, command, log_name=POST_FUNCTION)
+    row = read_function_object_metrics(case, POST_FUNCTION)[-1]
+    return BeadMetrics(**dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, map(float, row[1:]))))
 
 
 def wetting_angle(y: np.ndarray, metal_height: np.ndarray, toe_left: float,
@@ -382,7 +412,10 @@ def post_process(case: Path, output: Path | None = None, time: float | None = No
     t_fusion = fusion_temperature_ or fusion_temperature(case)
     if bead_section is None:
         bead_section = configured_bead_section(case)
-    result = metrics(grid, t_fusion, surface_height, bead_section)
+    time_read = float(grid.field_data["time"][0])
+    result = function_object_metrics(case, time_read, surface_height, bead_section,
+                                     fusion_temperature_)
+    result.wetting_angle = bead_wetting_angle(grid, result.bead_section, surface_height)
 
     temperature = np.asarray(grid.cell_data["T"])
     temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))

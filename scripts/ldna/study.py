@@ -26,8 +26,8 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .foamcase import BALANCES, ENV_SCRIPT, copy_case, dictionary_value, latest_run_table, run
-from .foamdict import set_entry
+from .case import Case
+from .foamcase import BALANCES, ENV_SCRIPT
 from .post import BeadMetrics, read_function_object_metrics
 
 #: Dictionary of the template's knobs, for parameters without a file
@@ -92,23 +92,16 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
         path = study_dir / name
         if path.exists():
             shutil.rmtree(path)
-        copy_case(template, path)
+        case = Case.copy_of(template, path)
         # Knobs first: entries of other files may expand them
         ordered = sorted(zip(parameters, combination), key=lambda pv: pv[0].file != CASE_PARAMETERS)
         for parameter, value in ordered:
-            if parameter.file == CASE_PARAMETERS:
-                set_entry(path / CASE_PARAMETERS, parameter.entry, value)
-            else:
-                run(path, f"foamDictionary -entry '{parameter.entry}' -set '{value}' "
-                          f"{parameter.file}", log_name=f"foamDictionary.{index}")
-        control = path / "system" / "controlDict"
+            case.set(parameter.file, parameter.entry, value)
         if end_time is not None:
-            set_entry(control, "endTime", f"{end_time:g}")
+            case.set("system/controlDict", "endTime", f"{end_time:g}")
         if n_procs > 1:
-            run(path, f"foamDictionary -entry numberOfSubdomains -set {n_procs} "
-                      "system/decomposeParDict", log_name="foamDictionary.np")
-            run(path, f"foamDictionary -entry coeffs/n -set '({n_procs} 1 1)' "
-                      "system/decomposeParDict", log_name="foamDictionary.n")
+            case.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
+            case.set("system/decomposeParDict", "coeffs/n", f"({n_procs} 1 1)")
         members.append(Member(name, {p.name: v for p, v in zip(parameters, combination)}, path))
     return members
 
@@ -116,7 +109,7 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
 def _simulated_time(case: Path) -> float:
     """Latest time of the solver's balance table (0 before the run starts)."""
     try:
-        times = latest_run_table(case, *BALANCES)["Time"]
+        times = Case(case).latest_table(*BALANCES)["Time"]
     except (FileNotFoundError, IndexError, ValueError):
         return 0.0
     return float(times[-1]) if len(times) else 0.0
@@ -134,7 +127,7 @@ def _progress(done: float, total: int, label: str, started: float) -> None:
 
 def run_member(member: Member, parallel: bool, index: int, total: int, started: float) -> None:
     """Run one member's Allrun and read its metrics."""
-    end_time = float(dictionary_value(member.path, "system/controlDict", "endTime"))
+    end_time = Case(member.path).scalar("system/controlDict", "endTime")
     command = f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
     label = f"{member.name} " + " ".join(f"{k}={v}" for k, v in member.values.items())
     begin = time.time()

@@ -1,0 +1,127 @@
+"""One ldnaFoam case on disk: copy, set entries, mesh, decompose, run, read.
+
+``Case`` is what the tools (``ldna bench``, ``study``, ``accuracy``) do to a
+case, in one place, the way foamlib's ``FoamCase`` does for OpenFOAM
+cases.  Fields are read and written with foamlib.  Dictionaries are edited
+as text where foamlib 1.7.10 cannot parse them: it stops at the v1912
+``#eval{ ... }`` entries of the template's ``constant/fvOptions``,
+``system/blockMeshDict`` and ``system/controlDict`` and at
+``#include "meshLevels/level$level"`` in ``system/snappyHexMeshDict``
+(measured on cases/ldna); top-level entries are then replaced in place,
+keeping comments and macros, and scoped ones (``laser/absorptionModel``)
+are set with OpenFOAM's ``foamDictionary``.
+"""
+from __future__ import annotations
+
+import shlex
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import foamcase, foamdict, meshing
+
+
+@dataclass(frozen=True)
+class Case:
+    """An ldnaFoam case directory."""
+
+    path: Path
+
+    @classmethod
+    def copy_of(cls, template: Path | "Case", destination: Path) -> "Case":
+        """A copy of a case template, without the results of earlier runs."""
+        source = template.path if isinstance(template, Case) else Path(template)
+        return cls(foamcase.copy_case(source, Path(destination)))
+
+    def __truediv__(self, relative: str) -> Path:
+        return self.path / relative
+
+    # Dictionaries
+
+    def set(self, file: str, entry: str, value: str) -> None:
+        """Set ``entry`` of ``file`` (relative to the case) to ``value``.
+
+        A top-level entry that the file has is replaced in place; a scoped
+        entry (``block/entry``) or a new one is set with foamDictionary,
+        which writes the file with its macros expanded.
+        """
+        if "/" not in entry:
+            try:
+                foamdict.set_entry(self.path / file, entry, value)
+                return
+            except KeyError:
+                pass
+        self.run(f"foamDictionary -entry {shlex.quote(entry)} -set {shlex.quote(value)} "
+                 f"{shlex.quote(file)}", log_name="foamDictionary")
+
+    def value(self, file: str, entry: str) -> str:
+        """The value of a (scoped) entry as OpenFOAM reads it."""
+        return foamcase.dictionary_value(self.path, file, entry)
+
+    def scalar(self, file: str, entry: str) -> float:
+        """The numeric value of an entry (``constant 7000`` gives 7000)."""
+        return foamcase.dictionary_scalar(self.path, file, entry)
+
+    # Mesh and runs
+
+    def mesh(self) -> int:
+        """Mesh as the template's Allrun does; the number of cells."""
+        return meshing.mesh_case(self.path)
+
+    @property
+    def cells(self) -> int:
+        """Cells of the case's mesh."""
+        return meshing.cell_count(self.path)
+
+    def decompose(self, n_procs: int | None = None) -> None:
+        """decomposePar (into ``n_procs`` subdomains, if given)."""
+        if n_procs is not None:
+            self.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
+        self.run("decomposePar -force", log_name="decomposePar")
+
+    def run(self, command: str = "ldnaFoam", n_procs: int = 1, log_name: str | None = None,
+            check: bool = True, timeout: float | None = None) -> foamcase.RunResult:
+        """Run ``command`` in the case, on ``n_procs`` MPI ranks if more than one
+        (the case must be decomposed); output in ``log.<log_name>``."""
+        if n_procs > 1:
+            return foamcase.run_parallel(self.path, command, n_procs, log_name=log_name,
+                                         check=check)
+        return foamcase.run(self.path, command, log_name=log_name, check=check,
+                            timeout=timeout)
+
+    def reconstruct(self) -> None:
+        """reconstructPar of the latest time."""
+        self.run("reconstructPar -latestTime", log_name="reconstructPar")
+
+    # Results
+
+    @property
+    def times(self) -> list[Path]:
+        """Time directories, sorted by time."""
+        return foamcase.time_directories(self.path)
+
+    def field(self, name: str, time: str | None = None) -> np.ndarray:
+        """Cell values of a field at ``time`` (default: the latest)."""
+        directory = self.path / time if time is not None else self.times[-1]
+        return foamcase.read_internal_field(directory / name)
+
+    def table(self, name: str, file: str) -> np.ndarray:
+        """A function object's table over all runs (``postProcessing/<name>``)."""
+        return foamcase.read_table(self.path, name, file)
+
+    def latest_table(self, name: str, file: str) -> np.ndarray:
+        """A function object's table of the latest run only."""
+        return foamcase.latest_run_table(self.path, name, file)
+
+    def balances(self) -> np.ndarray:
+        """The solver's domain totals and health, one row per step."""
+        return foamcase.read_balances(self.path)
+
+    def seconds_per_step(self) -> float:
+        """Mean CPU time per step of the latest run (timeInfo), without the
+        first step (start-up)."""
+        times = self.latest_table(*foamcase.TIME_INFO)["cpuTime"]
+        if len(times) < 3:
+            raise RuntimeError(f"too few steps in {self.path}")
+        return float(np.diff(times)[1:].mean())

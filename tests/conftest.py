@@ -21,6 +21,13 @@ TEST_CASES = Path(__file__).resolve().parent / "cases"
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
 
 
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """The two tiers: a test not marked ``unit`` runs the solver."""
+    for item in items:
+        if item.get_closest_marker("unit") is None:
+            item.add_marker(pytest.mark.solver)
+
+
 def pytest_sessionstart(session: pytest.Session) -> None:
     """Fail early and clearly when the solver has not been built."""
     if not (PROJECT_DIR / "build" / "bin" / "ldnaFoam").exists():

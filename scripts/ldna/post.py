@@ -206,7 +206,9 @@ functions
         run_parallel(case, command, n_procs, log_name=POST_FUNCTION)
     else:
         run(case, command, log_name=POST_FUNCTION)
-    row = read_function_object_metrics(case, POST_FUNCTION)[-1]
+    # This time's row only: earlier calls left the rows of other times
+    table = case / "postProcessing" / POST_FUNCTION / time_name / "meltPoolMetrics.dat"
+    row = np.loadtxt(table, comments="#", ndmin=2)[-1]
     return BeadMetrics(**dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, map(float, row[1:]))))
 
 

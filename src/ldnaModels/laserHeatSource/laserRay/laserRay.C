@@ -63,7 +63,8 @@ Foam::laserRay::laserRay
     const vector& direction,
     const scalar power,
     const vector& surfaceNormal,
-    const label nEvents
+    const label nEvents,
+    const label nStuck
 )
 :
     position_(position),
@@ -72,7 +73,8 @@ Foam::laserRay::laserRay
     surfaceNormal_(surfaceNormal),
     power_(power),
     nEvents_(nEvents),
-    reflectedCell_(-1)
+    reflectedCell_(-1),
+    nStuck_(nStuck)
 {}
 
 
@@ -150,7 +152,6 @@ Foam::label Foam::laserRay::track(trackingData& td)
 {
     const polyBoundaryMesh& patches = td.mesh.boundaryMesh();
 
-    label nStuck = 0;
     while (cell_ >= 0)
     {
         const label celli = cell_;
@@ -193,8 +194,8 @@ Foam::label Foam::laserRay::track(trackingData& td)
             position_ += toExit*direction_;
             td.model.cross(*this, td, celli, toExit);
 
-            nStuck = (toExit < td.stuckLength) ? nStuck + 1 : 0;
-            if (nStuck > maxStuckSteps)
+            nStuck_ = (toExit < td.stuckLength) ? nStuck_ + 1 : 0;
+            if (nStuck_ > maxStuckSteps)
             {
                 stop(td, false);
             }

@@ -127,8 +127,9 @@ void Foam::rayTracer::trace
         neighbourIndex[neighbourProcs[i]] = i;
     }
 
-    // Per neighbour: the patch index there, the face in the patch, and
-    // the ray's state
+    // Per neighbour and ray: the patch index there, the face in the patch,
+    // the events and steps without progress (labels); position, direction
+    // and surface normal (vectors); power
     List<DynamicList<label>> sendLabels(neighbourProcs.size());
     List<DynamicList<vector>> sendVectors(neighbourProcs.size());
     List<DynamicList<scalar>> sendPowers(neighbourProcs.size());
@@ -163,6 +164,7 @@ void Foam::rayTracer::trace
             );
             sendLabels[i].append(facei - procPatch.start());
             sendLabels[i].append(ray.nEvents());
+            sendLabels[i].append(ray.nStuck());
             sendVectors[i].append(ray.position());
             sendVectors[i].append(ray.direction());
             sendVectors[i].append(ray.lastSurfaceNormal());
@@ -206,19 +208,15 @@ void Foam::rayTracer::trace
 
             forAll(powers, rayi)
             {
-                const polyPatch& patch =
-                    patches[procPatches[labels[3*rayi]]];
-                const label celli = patch.faceCells()[labels[3*rayi + 1]];
+                const label* l = &labels[4*rayi];
+                const vector* v = &vectors[3*rayi];
+                const polyPatch& patch = patches[procPatches[l[0]]];
                 rays.append
                 (
                     laserRay
                     (
-                        vectors[3*rayi],
-                        celli,
-                        vectors[3*rayi + 1],
-                        powers[rayi],
-                        vectors[3*rayi + 2],
-                        labels[3*rayi + 2]
+                        v[0], patch.faceCells()[l[1]], v[1], powers[rayi],
+                        v[2], l[2], l[3]
                     )
                 );
             }

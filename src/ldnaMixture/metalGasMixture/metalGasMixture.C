@@ -4,6 +4,7 @@
 
 #include "metalGasMixture.H"
 #include "checkedInput.H"
+#include "physicalLimits.H"
 #include "interfaceDelta.H"
 #include "fvc.H"
 
@@ -22,6 +23,8 @@ const Foam::word Foam::metalGasMixture::interfacePressureName
 );
 
 const Foam::scalar Foam::metalGasMixture::Tref = 298.15;
+
+const Foam::scalar Foam::metalGasMixture::propertyTableStep = 5;
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -336,6 +339,11 @@ Foam::metalGasMixture::metalGasMixture
     gasReferenceTemperature_(0)
 {
     readCoeffs();
+    metal_->writeTable
+    (
+        U.db(), typeName, propertyCheckTmin, ldna::limits::temperature,
+        propertyTableStep
+    );
     correct();
 
     if (min(T_).value() <= 0)

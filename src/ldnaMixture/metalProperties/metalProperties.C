@@ -5,6 +5,8 @@
 #include "metalProperties.H"
 #include "checkedInput.H"
 #include "physicalLimits.H"
+#include "tableFile.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -129,6 +131,78 @@ Foam::scalar Foam::metalProperties::conductivity
 Foam::scalar Foam::metalProperties::viscosity(const scalar T) const
 {
     return muLiquid_->value(max(T, Tliquidus()));
+}
+
+
+void Foam::metalProperties::writeTable
+(
+    const objectRegistry& obr,
+    const fileName& prefix,
+    const scalar Tmin,
+    const scalar Tmax,
+    const scalar dT
+) const
+{
+    // Enough digits that a balance computed from the table agrees with the
+    // solver's own to well below any test tolerance (1e-9 relative)
+    const label precision = 12;
+
+    tableFile table(obr, prefix, "metal");
+    if (!table.writeToFile())
+    {
+        return;
+    }
+    table.file().precision(precision);
+    table.writeHeader
+    (
+        "Metal properties at equilibrium (liquidFraction of T); "
+        "rhoSolid, rhoLiquid: the density at liquid fraction 0 and 1 "
+        "(linear in between); enthalpy: sensible from "
+      + name(Tref_) + " K plus latent [J/kg]",
+        {
+            "liquidFraction", "sensibleEnthalpy", "enthalpy",
+            "rhoSolid", "rhoLiquid", "Cp", "kappa"
+        },
+        "T"
+    );
+
+    DynamicList<scalar> temperatures;
+    for (scalar T = Tmin; T < Tmax + 0.5*dT; T += dT)
+    {
+        temperatures.append(T);
+    }
+    // The mushy range's Cp rises linearly from the solid's to the liquid's
+    // value over a range that may be only a few kelvin: its enthalpy is
+    // tabulated on a finer grid, within dCp (Tl - Ts)/8e4 of the solver's
+    const label mushySteps = 100;
+    for (label i = 0; i <= mushySteps; ++i)
+    {
+        temperatures.append
+        (
+            Tsolidus() + (Tliquidus() - Tsolidus())*i/mushySteps
+        );
+    }
+    Foam::sort(temperatures);
+
+    scalar previous = -GREAT;
+    for (const scalar T : temperatures)
+    {
+        if (T - previous < SMALL*dT)
+        {
+            continue;
+        }
+        previous = T;
+        const scalar gl = equilibriumLiquidFraction(T);
+        const scalar hs = sensibleEnthalpy(T);
+        table.writeRow
+        (
+            T,
+            {
+                gl, hs, hs + gl*latentHeat(),
+                density(T, 0), density(T, 1), Cp(T), conductivity(T, gl)
+            }
+        );
+    }
 }
 
 

@@ -22,14 +22,15 @@ Foam::tableFile::tableFile
 void Foam::tableFile::writeHeader
 (
     const string& description,
-    const wordList& columns
+    const wordList& columns,
+    const word& firstColumn
 )
 {
     if (writeToFile())
     {
         OFstream& os = file();
         functionObjects::writeFile::writeHeader(os, description);
-        writeCommented(os, "Time");
+        writeCommented(os, firstColumn);
         for (const word& column : columns)
         {
             writeTabbed(os, column);
@@ -45,6 +46,21 @@ void Foam::tableFile::writeRow(const scalarList& values)
     {
         OFstream& os = file();
         writeCurrentTime(os);
+        for (const scalar value : values)
+        {
+            os  << tab << value;
+        }
+        os  << endl;
+    }
+}
+
+
+void Foam::tableFile::writeRow(const scalar x, const scalarList& values)
+{
+    if (writeToFile())
+    {
+        OFstream& os = file();
+        os  << x;
         for (const scalar value : values)
         {
             os  << tab << value;

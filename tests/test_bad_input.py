@@ -53,7 +53,9 @@ BAD_INPUTS = [
     ("zero gas constant", THERMO, "gas/R", "0", ["'R'", "is 0", "must lie in (0, "]),
     ("missing solidus", THERMO, "metal/solidus", None, ["solidus"]),
     ("unknown gas density model", THERMO, "gas/densityModel", "perfectGas",
-     ["densityModel", "Boussinesq or idealGas", "perfectGas"]),
+     ["densityModel", "perfectGas", "Boussinesq", "idealGas"]),
+    ("unknown metal density model", THERMO, "metal/densityModel", "incompressible",
+     ["densityModel", "incompressible", "Boussinesq", "variable"]),
     ("zero gas reference temperature", THERMO, "gas",
      "{ R 208.13; densityModel Boussinesq; referenceTemperature 0; Cp constant 520.3; "
      "kappa constant 0.0177; mu constant 2.27e-5; }",

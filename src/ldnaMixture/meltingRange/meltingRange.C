@@ -36,4 +36,38 @@ Foam::meltingRange::meltingRange(const dictionary& dict)
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::meltingRange::equilibrate
+(
+    const scalar H,
+    const scalar C,
+    const scalar m,
+    scalar& T,
+    scalar& gl
+) const
+{
+    const scalar Ts = Tsolidus_;
+    const scalar Tl = Tliquidus_;
+    const scalar dTm = Tl - Ts;
+    const scalar L = latentHeat_;
+
+    if (H <= C*Ts)
+    {
+        gl = 0;
+        T = H/C;
+    }
+    else if (H >= C*Tl + m*L)
+    {
+        gl = 1;
+        T = (H - m*L)/C;
+    }
+    else
+    {
+        T = (H + m*L*Ts/dTm)/(C + m*L/dTm);
+        gl = (T - Ts)/dTm;
+    }
+}
+
+
 // ************************************************************************* //

@@ -5,7 +5,7 @@
 #include "metalGasMixture.H"
 #include "checkedInput.H"
 #include "physicalLimits.H"
-#include "interfaceDelta.H"
+#include "layeredConductivity.H"
 #include "fvc.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -29,44 +29,6 @@ const Foam::scalar Foam::metalGasMixture::propertyTableStep = 5;
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-bool Foam::metalGasMixture::readBoussinesq
-(
-    const dictionary& phaseDict,
-    const word& otherModel,
-    const word& defaultModel,
-    const word& referenceName,
-    const word& referenceUnit,
-    const scalar referenceMax,
-    scalar& reference
-) const
-{
-    const word model
-    (
-        phaseDict.lookupOrDefault<word>("densityModel", defaultModel)
-    );
-    if (model != "Boussinesq" && model != otherModel)
-    {
-        FatalIOErrorInFunction(phaseDict)
-            << "Entry 'densityModel' must be Boussinesq or " << otherModel
-            << ", not " << model << exit(FatalIOError);
-    }
-
-    Info<< "    " << phaseDict.dictName() << " density: " << model;
-    if (model == "Boussinesq")
-    {
-        reference = ldna::getChecked<scalar>
-        (
-            phaseDict, referenceName, ldna::interval::open(0, referenceMax)
-        );
-        Info<< ", " << referenceName << " " << reference << " "
-            << referenceUnit << " for mass and inertia";
-    }
-    Info<< endl;
-
-    return model == "Boussinesq";
-}
-
-
 void Foam::metalGasMixture::readCoeffs()
 {
     using ldna::interval;
@@ -87,14 +49,7 @@ void Foam::metalGasMixture::readCoeffs()
         )
     );
 
-    // More passes smooth the curvature over more than the interface's
-    // neighbourhood
-    const label maxCurvatureSmoothing = 100;
-    curvatureSmoothing_ = ldna::getCheckedOrDefault<label>
-    (
-        *this, "curvatureSmoothing",
-        interval::closed(0, maxCurvatureSmoothing), 2
-    );
+    curvature_.read(*this);
 
     const dictionary& metal = subDict(phase1Name());
     ldna::checkKeys
@@ -106,11 +61,7 @@ void Foam::metalGasMixture::readCoeffs()
         }
     );
 
-    Boussinesq_ = readBoussinesq
-    (
-        metal, "variable", "Boussinesq", "referenceDensity", "kg/m3",
-        limits::density, referenceDensity_
-    );
+    metalDensity_ = metalDensityModel::New(metal);
     metal_.reset
     (
         new metalProperties(metal, propertyCheckTmin, propertyCheckTmax, Tref)
@@ -127,11 +78,7 @@ void Foam::metalGasMixture::readCoeffs()
     (
         new gasProperties(gas, propertyCheckTmin, propertyCheckTmax, Tref)
     );
-    gasBoussinesq_ = readBoussinesq
-    (
-        gas, "idealGas", "idealGas", "referenceTemperature", "K",
-        limits::temperature, gasReferenceTemperature_
-    );
+    gasDensity_ = gasDensityModel::New(gas);
 }
 
 
@@ -315,28 +262,9 @@ Foam::metalGasMixture::metalGasMixture
     ),
     pMin_("pMin", dimPressure, Zero),
     sigmaModel_(surfaceTensionModel::New(*this, U.mesh())),
-    curvatureSmoothing_(0),
-    curvature_
-    (
-        IOobject
-        (
-            "curvature",
-            U.time().timeName(),
-            U.mesh()
-        ),
-        U.mesh(),
-        dimensionedScalar(dimless/dimLength, Zero)
-    ),
-    curvaturef_
-    (
-        IOobject("curvaturef", U.time().timeName(), U.mesh()),
-        U.mesh(),
-        dimensionedScalar(dimless/dimLength, Zero)
-    ),
-    Boussinesq_(true),
-    referenceDensity_(0),
-    gasBoussinesq_(false),
-    gasReferenceTemperature_(0)
+    curvature_(alpha1()),
+    metalDensity_(),
+    gasDensity_()
 {
     readCoeffs();
     metal_->writeTable
@@ -417,72 +345,6 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h2() const
 }
 
 
-namespace
-{
-
-// Thermal resistance times area [m2 K/W] between the centre of the heat
-// capacity of a cell and its face at distance d, the cell's metal fraction
-// alpha lying as a layer against the face (thickness 2 alpha d) and its gas
-// behind it; metalHeatShare is the metal's share of the cell's heat
-// capacity.  Pure gas and pure metal give d/kappa
-Foam::scalar layeredHalfResistance
-(
-    const Foam::scalar d,
-    const Foam::scalar alpha,
-    const Foam::scalar metalHeatShare,
-    const Foam::scalar kappaMetal,
-    const Foam::scalar kappaGas
-)
-{
-    const Foam::scalar centre = d*(1 + alpha - metalHeatShare);
-    const Foam::scalar metalLayer = 2*alpha*d;
-    if (centre <= metalLayer)
-    {
-        return centre/kappaMetal;
-    }
-    return metalLayer/kappaMetal + (centre - metalLayer)/kappaGas;
-}
-
-
-// One cell of a face: its distance to the face, metal fraction, metal's
-// share of its heat capacity, phase and volume-mean conductivities
-struct faceCell
-{
-    Foam::scalar d, alpha, metalHeatShare, kappaMetal, kappaGas, kappa;
-};
-
-Foam::scalar seriesConductivity(const faceCell& lean, const faceCell& rich)
-{
-    return
-        (lean.d + rich.d)
-       /(
-            layeredHalfResistance
-            (
-                lean.d, lean.alpha, lean.metalHeatShare,
-                lean.kappaMetal, lean.kappaGas
-            )
-          + rich.d/rich.kappa
-        );
-}
-
-
-// Symmetric in a and b, so that both sides of a processor face agree
-Foam::scalar layeredFaceConductivity(const faceCell& a, const faceCell& b)
-{
-    if (a.alpha < b.alpha)
-    {
-        return seriesConductivity(a, b);
-    }
-    if (b.alpha < a.alpha)
-    {
-        return seriesConductivity(b, a);
-    }
-    return 0.5*(seriesConductivity(a, b) + seriesConductivity(b, a));
-}
-
-} // End anonymous namespace
-
-
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::kappa1() const
 {
     return evaluate
@@ -507,98 +369,16 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::kappa2() const
 
 Foam::tmp<Foam::surfaceScalarField> Foam::metalGasMixture::kappaf() const
 {
-    const fvMesh& mesh = alpha1().mesh();
-
     const volScalarField metal(max(min(alpha1(), scalar(1)), scalar(0)));
-    const volScalarField kappaMetal(kappa1());
-    const volScalarField kappaGas(kappa2());
     const volScalarField metalHeat(metal*rho1_*Cp1());
-    const volScalarField metalHeatShare
+    return layeredConductivity::faceConductivity
     (
-        metalHeat/(metalHeat + (1 - metal)*rho2Heat()*Cp2())
+        metal,
+        metalHeat/(metalHeat + (1 - metal)*rho2Heat()*Cp2()),
+        kappa1(),
+        kappa2(),
+        kappa_
     );
-
-    const auto cellOf = [&](const label celli, const scalar d)
-    {
-        return faceCell
-        {
-            d, metal[celli], metalHeatShare[celli],
-            kappaMetal[celli], kappaGas[celli], kappa_[celli]
-        };
-    };
-
-    tmp<surfaceScalarField> tkappaf
-    (
-        new surfaceScalarField
-        (
-            IOobject("kappaf", mesh.time().timeName(), mesh),
-            mesh,
-            kappa_.dimensions()
-        )
-    );
-    surfaceScalarField& kf = tkappaf.ref();
-
-    const labelUList& owner = mesh.owner();
-    const labelUList& neighbour = mesh.neighbour();
-    const vectorField& C = mesh.C();
-    const vectorField& Cf = mesh.Cf();
-    const vectorField& Sf = mesh.Sf();
-    const scalarField& magSf = mesh.magSf();
-
-    forAll(owner, facei)
-    {
-        const vector n(Sf[facei]/magSf[facei]);
-        kf[facei] = layeredFaceConductivity
-        (
-            cellOf(owner[facei], mag(n & (Cf[facei] - C[owner[facei]]))),
-            cellOf(neighbour[facei], mag(n & (C[neighbour[facei]] - Cf[facei])))
-        );
-    }
-
-    forAll(kf.boundaryField(), patchi)
-    {
-        fvsPatchScalarField& kfp = kf.boundaryFieldRef()[patchi];
-        const fvPatch& patch = mesh.boundary()[patchi];
-        if (!patch.coupled())
-        {
-            kfp = kappa_.boundaryField()[patchi];
-            continue;
-        }
-        const labelUList& faceCells = patch.faceCells();
-        const vectorField nf(patch.nf());
-        const vectorField ownerDelta(patch.Cf() - patch.Cn());
-        const vectorField delta(patch.delta());
-        const scalarField nbrMetal(metal.boundaryField()[patchi].patchNeighbourField());
-        const scalarField nbrShare
-        (
-            metalHeatShare.boundaryField()[patchi].patchNeighbourField()
-        );
-        const scalarField nbrKappa1
-        (
-            kappaMetal.boundaryField()[patchi].patchNeighbourField()
-        );
-        const scalarField nbrKappa2
-        (
-            kappaGas.boundaryField()[patchi].patchNeighbourField()
-        );
-        const scalarField nbrKappa(kappa_.boundaryField()[patchi].patchNeighbourField());
-        forAll(kfp, i)
-        {
-            const scalar dOwner = mag(nf[i] & ownerDelta[i]);
-            kfp[i] = layeredFaceConductivity
-            (
-                cellOf(faceCells[i], dOwner),
-                faceCell
-                {
-                    max(mag(nf[i] & delta[i]) - dOwner, SMALL),
-                    nbrMetal[i], nbrShare[i],
-                    nbrKappa1[i], nbrKappa2[i], nbrKappa[i]
-                }
-            );
-        }
-    }
-
-    return tkappaf;
 }
 
 
@@ -626,17 +406,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp2() const
 
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho2Heat() const
 {
-    if (gasBoussinesq_)
-    {
-        const dimensionedScalar Tref
-        (
-            "referenceTemperature",
-            dimTemperature,
-            gasReferenceTemperature_
-        );
-        return rho2_*Tref/T_;
-    }
-    return tmp<volScalarField>::New("rho2Heat", rho2_);
+    return gasDensity_->heatDensity(rho2_, T_);
 }
 
 
@@ -648,17 +418,9 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rho() const
 
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::rhoGravity() const
 {
-    if (gasBoussinesq_)
-    {
-        const dimensionedScalar R
-        (
-            "R",
-            dimVelocity*dimVelocity/dimTemperature,
-            gas_->R()
-        );
-        return alpha1()*rho1Gravity_ + alpha2()*p_/(R*T_);
-    }
-    return alpha1()*rho1Gravity_ + alpha2()*rho2_;
+    return
+        alpha1()*rho1Gravity_
+      + gasDensity_->gravityDensity(alpha2(), p_, T_, rho2_, gas_->R());
 }
 
 
@@ -694,49 +456,6 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
 }
 
 
-void Foam::metalGasMixture::correctCurvature()
-{
-    const fvMesh& mesh = alpha1().mesh();
-
-    volScalarField alphaSmooth("alphaSmooth", alpha1());
-    for (label pass = 0; pass < curvatureSmoothing_; ++pass)
-    {
-        alphaSmooth = fvc::average(fvc::interpolate(alphaSmooth));
-
-        // The boundary values follow alpha1's conditions (zeroGradient at
-        // walls); left at the unsmoothed values, they bent the smoothed
-        // interface where it meets a wall
-        alphaSmooth.correctBoundaryConditions();
-    }
-
-    // Unit normals in the cells of the (smoothed) interface band only
-    const volVectorField gradAlpha(fvc::grad(alphaSmooth, "nHat"));
-    volVectorField nHat
-    (
-        IOobject("nHat", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedVector(dimless, Zero)
-    );
-    nHat.primitiveFieldRef() = metalInterfaceNormal(gradAlpha);
-
-    // Processor and symmetry faces take their neighbour's (mirrored) normal;
-    // on walls and open patches nHat stays zero: no capillary flux through
-    // them (the 90 degree contact angle of a zeroGradient alpha)
-    nHat.correctBoundaryConditions();
-    curvature_ = -fvc::div(fvc::interpolate(nHat) & mesh.Sf());
-
-    // Face curvature: the cell curvatures weighted by |grad alpha| of the
-    // smoothed field, so that
-    // a face of the sharp interface takes the curvature of the cells the
-    // interface passes through, not that of the band's edge cells, where
-    // the normals fade out and -div(nHat) is an artefact of the fading
-    const volScalarField weight(mag(gradAlpha));
-    curvaturef_ =
-        fvc::interpolate(weight*curvature_)
-       /(fvc::interpolate(weight) + dimensionedScalar("small", weight.dimensions(), VSMALL));
-}
-
-
 Foam::tmp<Foam::surfaceScalarField>
 Foam::metalGasMixture::surfaceTensionForce() const
 {
@@ -755,9 +474,10 @@ Foam::metalGasMixture::surfaceTensionForce() const
     (
         liquidMetalFraction
        *(
-            curvatureSmoothing_ == 0
+            !curvature_.smoothed()
           ? interfaceProperties::surfaceTensionForce()
-          : fvc::interpolate(sigma())*curvaturef_*fvc::snGrad(alpha1())
+          : fvc::interpolate(sigma())*curvature_.faceCurvature()
+           *fvc::snGrad(alpha1())
         )
     );
 
@@ -785,9 +505,9 @@ void Foam::metalGasMixture::correct()
     // flux of the alpha equation's interface compression
     interfaceProperties::correct();
 
-    if (curvatureSmoothing_ > 0)
+    if (curvature_.smoothed())
     {
-        correctCurvature();
+        curvature_.correct();
     }
 }
 
@@ -799,9 +519,6 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
     const scalarField& m2
 )
 {
-    const scalar Ts = metal_->Tsolidus();
-    const scalar Tl = metal_->Tliquidus();
-    const scalar dTm = Tl - Ts;
     const scalar L = metal_->latentHeat();
 
     const volScalarField Cp1Field(Cp1());
@@ -824,21 +541,7 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
 
         scalar gl;
         scalar Tnew;
-        if (H <= C*Ts)
-        {
-            gl = 0;
-            Tnew = H/C;
-        }
-        else if (H >= C*Tl + m*L)
-        {
-            gl = 1;
-            Tnew = (H - m*L)/C;
-        }
-        else
-        {
-            Tnew = (H + m*L*Ts/dTm)/(C + m*L/dTm);
-            gl = (Tnew - Ts)/dTm;
-        }
+        metal_->equilibrate(H, C, m, Tnew, gl);
 
         // Weighted by the metal fraction: a cell with a trace of metal may
         // flip between solid and liquid without carrying latent heat
@@ -878,15 +581,7 @@ void Foam::metalGasMixture::correctThermo()
         dimDensity,
         [&](scalar T, scalar gl) { return metal_->density(T, gl); }
     );
-    if (Boussinesq_)
-    {
-        rho1_ =
-            dimensionedScalar("referenceDensity", dimDensity, referenceDensity_);
-    }
-    else
-    {
-        rho1_ = rho1Gravity_;
-    }
+    metalDensity_->correct(rho1Gravity_, rho1_);
 
     psi2_ = evaluate
     (
@@ -894,8 +589,7 @@ void Foam::metalGasMixture::correctThermo()
         dimDensity/dimPressure,
         [&](scalar T, scalar)
         {
-            return
-                1/(gas_->R()*(gasBoussinesq_ ? gasReferenceTemperature_ : T));
+            return 1/(gas_->R()*gasDensity_->massTemperature(T));
         }
     );
     rho2_ = psi2_*p_;

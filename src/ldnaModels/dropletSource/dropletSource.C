@@ -32,9 +32,6 @@ namespace fv
 
 void Foam::fv::dropletSource::readCoeffs()
 {
-    using ldna::interval;
-    namespace limits = ldna::limits;
-
     ldna::checkKeys
     (
         coeffs_,
@@ -46,6 +43,18 @@ void Foam::fv::dropletSource::readCoeffs()
             "irregularSpacingIncrease", "wires", "alpha", "U", "T", "log"
         }
     );
+
+    readTiming();
+    readIrregularity();
+    readMode();
+    readWires();
+}
+
+
+void Foam::fv::dropletSource::readTiming()
+{
+    using ldna::interval;
+    namespace limits = ldna::limits;
 
     speed_ = ldna::getChecked<scalar>
     (
@@ -82,6 +91,13 @@ void Foam::fv::dropletSource::readCoeffs()
     (
         coeffs_, "switchThreshold", interval::open(-1, 1), threshold
     );
+}
+
+
+void Foam::fv::dropletSource::readIrregularity()
+{
+    using ldna::interval;
+    namespace limits = ldna::limits;
 
     irregularityTime_ = ldna::getCheckedOrDefault<scalar>
     (
@@ -103,7 +119,11 @@ void Foam::fv::dropletSource::readCoeffs()
         coeffs_, "irregularSpacingIncrease",
         interval::closedOpen(0, limits::length), spacingIncrease
     );
+}
 
+
+void Foam::fv::dropletSource::readMode()
+{
     const word mode = coeffs_.lookupOrDefault<word>("mode", "gaussian");
     if (mode != "insertion" && mode != "gaussian")
     {
@@ -131,23 +151,27 @@ void Foam::fv::dropletSource::readCoeffs()
         fieldNames_[2] = TName_;
     }
     applied_.setSize(fieldNames_.size(), false);
+}
 
-    const scalar wireDensity = ldna::getChecked<scalar>
+
+void Foam::fv::dropletSource::readWires()
+{
+    using ldna::interval;
+    namespace limits = ldna::limits;
+
+    wireDefaults defaults;
+    defaults.wireDensity = ldna::getChecked<scalar>
     (
         coeffs_, "wireDensity", interval::openClosed(0, limits::density)
     );
-    const vector position0 = coeffs_.get<vector>("position");
-    const scalar wireSpacing = ldna::getChecked<scalar>
+    defaults.position = coeffs_.get<vector>("position");
+    defaults.spacing = ldna::getChecked<scalar>
     (
         coeffs_, "wireSpacing", interval::closedOpen(0, limits::length)
     );
-    const vector spacingDirection(1, 0, 0);
-
-    const metalGasMixture& mixture =
-        mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
-
-    const boundBox bounds(mesh_.points(), true);
-    const scalar domainSize = cmptMin(bounds.span());
+    defaults.domainSize = cmptMin(boundBox(mesh_.points(), true).span());
+    defaults.irregularStart =
+        irregularityTime_ > mesh_.time().startTime().value();
 
     const dictionary& wiresDict = coeffs_.subDict("wires");
     wires_.setSize(wiresDict.size());
@@ -158,9 +182,6 @@ void Foam::fv::dropletSource::readCoeffs()
             << exit(FatalIOError);
     }
 
-    const bool irregularStart =
-        irregularityTime_ > mesh_.time().startTime().value();
-
     label k = 0;
     for (const entry& e : wiresDict)
     {
@@ -170,136 +191,155 @@ void Foam::fv::dropletSource::readCoeffs()
                 << "Entry '" << e.keyword() << "' in 'wires' must be a"
                 << " dictionary of one wire" << exit(FatalIOError);
         }
-        const dictionary& dict = e.dict();
-        wireStream& wire = wires_[k];
-
-        wire.name = e.keyword();
-        ldna::checkKeys
-        (
-            dict,
-            {
-                "wireRadius", "feedSpeed", "wireDensity", "dropletRadius",
-                "detachmentFrequency", "temperature", "position",
-                "longitudinalSign"
-            }
-        );
-        wire.wireRadius = ldna::getChecked<scalar>
-        (
-            dict, "wireRadius", interval::open(0, limits::length)
-        );
-        wire.feedSpeed = ldna::getChecked<scalar>
-        (
-            dict, "feedSpeed", interval::open(0, limits::speed)
-        );
-        wire.wireDensity = ldna::getCheckedOrDefault<scalar>
-        (
-            dict, "wireDensity", interval::openClosed(0, limits::density),
-            wireDensity
-        );
-
-        const scalar wireVolumeRate =
-            wire.feedSpeed*pi*sqr(wire.wireRadius);
-        const bool hasRadius = dict.found("dropletRadius");
-        const bool hasFrequency = dict.found("detachmentFrequency");
-        if (hasRadius == hasFrequency)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Give exactly one of 'dropletRadius' and"
-                << " 'detachmentFrequency' for wire " << wire.name
-                << " (the other follows from eq. 16)" << exit(FatalIOError);
-        }
-        if (hasRadius)
-        {
-            wire.dropletRadius = ldna::getChecked<scalar>
-            (
-                dict, "dropletRadius", interval::open(0, limits::length)
-            );
-            wire.frequency =
-                wireVolumeRate/(4.0/3.0*pi*pow3(wire.dropletRadius));
-        }
-        else
-        {
-            wire.frequency = ldna::getChecked<scalar>
-            (
-                dict, "detachmentFrequency",
-                interval::openClosed(0, limits::frequency)
-            );
-            wire.dropletRadius =
-                cbrt(3*wireVolumeRate/wire.frequency/(4*pi));
-        }
-
-        const scalar largest =
-            2*wire.dropletRadius*(irregularStart ? irregularDiameterFactor_ : 1);
-        if (largest >= domainSize)
-        {
-            FatalIOErrorInFunction(dict)
-                << "The droplets of wire " << wire.name << " ("
-                << largest << " m across) must be smaller than the domain,"
-                << " whose smallest extent is " << domainSize << " m"
-                << exit(FatalIOError);
-        }
-
-        const scalar dropletTemperature = 2100;
-        wire.temperature = ldna::getCheckedOrDefault<scalar>
-        (
-            dict, "temperature", interval::open(0, limits::temperature),
-            dropletTemperature
-        );
-        wire.enthalpy =
-            mixture.metal().sensibleEnthalpy(wire.temperature)
-          + mixture.metal().equilibriumLiquidFraction(wire.temperature)
-           *mixture.metal().latentHeat();
-
-        wire.position =
-            dict.found("position")
-          ? dict.get<vector>("position")
-          : position0 + k*wireSpacing*spacingDirection;
-
-        const scalar sign = (k % 2 == 0) ? -1 : 1;
-        wire.longitudinalSign = dict.lookupOrDefault<scalar>
-        (
-            "longitudinalSign", sign
-        );
-        if (mag(mag(wire.longitudinalSign) - 1) > SMALL)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'longitudinalSign' must be -1 or 1, not "
-                << wire.longitudinalSign << exit(FatalIOError);
-        }
-
-        wire.irregularPosition =
-            wire.position + k*irregularSpacingIncrease_*spacingDirection;
-        checkResolution(wire);
-        if (!insertion_)
-        {
-            wire.regular = footprint(wire, wire.position, wire.dropletRadius);
-            if (irregularStart)
-            {
-                wire.irregular = footprint
-                (
-                    wire,
-                    wire.irregularPosition,
-                    irregularDiameterFactor_*wire.dropletRadius
-                );
-            }
-        }
-
-        wire.addedMass = 0;
-        wire.onTime = 0;
-
-        Info<< "    " << name_ << " wire " << wire.name
-            << ": mass rate " << wire.massRate() << " kg/s, droplet radius "
-            << wire.dropletRadius << " m, frequency " << wire.frequency
-            << " 1/s, droplet mass " << wire.massRate()/wire.frequency
-            << " kg at " << wire.temperature << " K (enthalpy "
-            << wire.enthalpy << " J/kg), source at " << wire.position
-            << ", duty fraction " << dutyFraction()
-            << ", pulse mass rate " << wire.massRate()/dutyFraction()
-            << " kg/s, " << (insertion_ ? "inserted as spheres" : "Gaussian")
-            << endl;
-
+        readWire(e.keyword(), e.dict(), k, defaults, wires_[k]);
         ++k;
     }
+}
+
+
+void Foam::fv::dropletSource::readWire
+(
+    const word& name,
+    const dictionary& dict,
+    const label k,
+    const wireDefaults& defaults,
+    wireStream& wire
+) const
+{
+    using ldna::interval;
+    namespace limits = ldna::limits;
+
+    // The wires stand in a row along x, the welding direction
+    const vector spacingDirection(1, 0, 0);
+
+    const metalGasMixture& mixture =
+        mesh_.lookupObject<metalGasMixture>("thermophysicalProperties");
+
+    wire.name = name;
+    ldna::checkKeys
+    (
+        dict,
+        {
+            "wireRadius", "feedSpeed", "wireDensity", "dropletRadius",
+            "detachmentFrequency", "temperature", "position",
+            "longitudinalSign"
+        }
+    );
+    wire.wireRadius = ldna::getChecked<scalar>
+    (
+        dict, "wireRadius", interval::open(0, limits::length)
+    );
+    wire.feedSpeed = ldna::getChecked<scalar>
+    (
+        dict, "feedSpeed", interval::open(0, limits::speed)
+    );
+    wire.wireDensity = ldna::getCheckedOrDefault<scalar>
+    (
+        dict, "wireDensity", interval::openClosed(0, limits::density),
+        defaults.wireDensity
+    );
+
+    const scalar wireVolumeRate =
+        wire.feedSpeed*pi*sqr(wire.wireRadius);
+    const bool hasRadius = dict.found("dropletRadius");
+    const bool hasFrequency = dict.found("detachmentFrequency");
+    if (hasRadius == hasFrequency)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Give exactly one of 'dropletRadius' and"
+            << " 'detachmentFrequency' for wire " << wire.name
+            << " (the other follows from eq. 16)" << exit(FatalIOError);
+    }
+    if (hasRadius)
+    {
+        wire.dropletRadius = ldna::getChecked<scalar>
+        (
+            dict, "dropletRadius", interval::open(0, limits::length)
+        );
+        wire.frequency =
+            wireVolumeRate/(4.0/3.0*pi*pow3(wire.dropletRadius));
+    }
+    else
+    {
+        wire.frequency = ldna::getChecked<scalar>
+        (
+            dict, "detachmentFrequency",
+            interval::openClosed(0, limits::frequency)
+        );
+        wire.dropletRadius =
+            cbrt(3*wireVolumeRate/wire.frequency/(4*pi));
+    }
+
+    const scalar largest =
+        2*wire.dropletRadius*(defaults.irregularStart ? irregularDiameterFactor_ : 1);
+    if (largest >= defaults.domainSize)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The droplets of wire " << wire.name << " ("
+            << largest << " m across) must be smaller than the domain,"
+            << " whose smallest extent is " << defaults.domainSize << " m"
+            << exit(FatalIOError);
+    }
+
+    const scalar dropletTemperature = 2100;
+    wire.temperature = ldna::getCheckedOrDefault<scalar>
+    (
+        dict, "temperature", interval::open(0, limits::temperature),
+        dropletTemperature
+    );
+    wire.enthalpy =
+        mixture.metal().sensibleEnthalpy(wire.temperature)
+      + mixture.metal().equilibriumLiquidFraction(wire.temperature)
+       *mixture.metal().latentHeat();
+
+    wire.position =
+        dict.found("position")
+      ? dict.get<vector>("position")
+      : defaults.position + k*defaults.spacing*spacingDirection;
+
+    const scalar sign = (k % 2 == 0) ? -1 : 1;
+    wire.longitudinalSign = dict.lookupOrDefault<scalar>
+    (
+        "longitudinalSign", sign
+    );
+    if (mag(mag(wire.longitudinalSign) - 1) > SMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'longitudinalSign' must be -1 or 1, not "
+            << wire.longitudinalSign << exit(FatalIOError);
+    }
+
+    wire.irregularPosition =
+        wire.position + k*irregularSpacingIncrease_*spacingDirection;
+    checkResolution(wire);
+    if (!insertion_)
+    {
+        wire.regular = footprint(wire, wire.position, wire.dropletRadius);
+        if (defaults.irregularStart)
+        {
+            wire.irregular = footprint
+            (
+                wire,
+                wire.irregularPosition,
+                irregularDiameterFactor_*wire.dropletRadius
+            );
+        }
+    }
+
+    wire.addedMass = 0;
+    wire.onTime = 0;
+
+    Info<< "    " << name_ << " wire " << wire.name
+        << ": mass rate " << wire.massRate() << " kg/s, droplet radius "
+        << wire.dropletRadius << " m, frequency " << wire.frequency
+        << " 1/s, droplet mass " << wire.massRate()/wire.frequency
+        << " kg at " << wire.temperature << " K (enthalpy "
+        << wire.enthalpy << " J/kg), source at " << wire.position
+        << ", duty fraction " << dutyFraction()
+        << ", pulse mass rate " << wire.massRate()/dutyFraction()
+        << " kg/s, " << (insertion_ ? "inserted as spheres" : "Gaussian")
+        << endl;
+
 }
 
 

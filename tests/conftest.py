@@ -1,6 +1,7 @@
 """Fixtures of the ldnaFoam test suite: real cases run by the real solver.
 
-Each fixture copies a small case into a temporary directory, completes it
+Each fixture copies a small case into a temporary directory (an
+``ldna.case.Case``), completes it
 with the numerics (and, where the test does not set its own, the material
 data) of the LDNA template so that the tests exercise what users run, and
 runs OpenFOAM's applications on it.  Tests skip nothing: without a built
@@ -13,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import copy_case, run
+from ldna.case import Case
 
 PROJECT_DIR = Path(__file__).resolve().parents[1]
 
@@ -34,13 +35,13 @@ def pytest_sessionstart(session: pytest.Session) -> None:
         raise pytest.UsageError("ldnaFoam is not built: run ./Allwmake (or bin/ldna-test)")
 
 
-def prepare_test_case(name: str, destination: Path, material_from_template: bool) -> Path:
+def prepare_test_case(name: str, destination: Path, material_from_template: bool) -> Case:
     """Copy tests/cases/<name> and add the template's fvSchemes and fvSolution.
 
     With ``material_from_template`` the template's thermophysicalProperties
     (316L and argon) are used as well.
     """
-    case = copy_case(TEST_CASES / name, destination / name)
+    case = Case.copy_of(TEST_CASES / name, destination / name)
     for file in ("fvSchemes", "fvSolution"):
         shutil.copy(TEMPLATE / "system" / file, case / "system" / file)
     if material_from_template:
@@ -52,56 +53,54 @@ def prepare_test_case(name: str, destination: Path, material_from_template: bool
 
 
 @pytest.fixture
-def stefan_case(tmp_path: Path) -> Path:
+def stefan_case(tmp_path: Path) -> Case:
     """The meshed 1D melting bar of cases/stefanMelting (not yet run)."""
-    case = copy_case(PROJECT_DIR / "cases" / "stefanMelting", tmp_path / "stefanMelting")
-    run(case, "blockMesh")
+    case = Case.copy_of(PROJECT_DIR / "cases" / "stefanMelting", tmp_path / "stefanMelting")
+    case.run("blockMesh")
     return case
 
 
 @pytest.fixture
-def energy_box_case(tmp_path: Path) -> Path:
+def energy_box_case(tmp_path: Path) -> Case:
     """The meshed closed box, metal below argon, with its heater zone (not yet run)."""
     case = prepare_test_case("energyBox", tmp_path, material_from_template=True)
-    run(case, "blockMesh")
-    run(case, "topoSet")
-    run(case, "setFields")
+    case.run("blockMesh")
+    case.run("topoSet")
+    case.run("setFields")
     return case
 
 
 @pytest.fixture
-def laser_slab_case(tmp_path: Path) -> Path:
+def laser_slab_case(tmp_path: Path) -> Case:
     """The meshed box with a flat 316L slab under argon, for the laser tests (not yet run)."""
     case = prepare_test_case("laserSlab", tmp_path, material_from_template=True)
-    run(case, "blockMesh")
-    run(case, "setFields")
+    case.run("blockMesh")
+    case.run("setFields")
     return case
 
 
 @pytest.fixture
-def marangoni_layer_case(tmp_path: Path) -> Path:
+def marangoni_layer_case(tmp_path: Path) -> Case:
     """The meshed 2D liquid layer between a hot and a cold wall, no gravity (not yet run)."""
     case = prepare_test_case("marangoniLayer", tmp_path, material_from_template=False)
-    run(case, "blockMesh")
-    run(case, "setFields")
+    case.run("blockMesh")
+    case.run("setFields")
     return case
 
 
 @pytest.fixture
-def static_droplet_case(tmp_path: Path) -> Path:
+def static_droplet_case(tmp_path: Path) -> Case:
     """The meshed 2D box with a liquid cylinder of exact cut-cell fractions (not yet run)."""
     case = prepare_test_case("staticDroplet", tmp_path, material_from_template=False)
-    run(case, "blockMesh")
-    run(case, "setAlphaField")
+    case.run("blockMesh")
+    case.run("setAlphaField")
     return case
 
 
 @pytest.fixture
-def ldna_case(tmp_path: Path) -> Path:
+def ldna_case(tmp_path: Path) -> Case:
     """A copy of the LDNA template at resolution level 0, ASCII output (not yet meshed)."""
-    from ldna.foamdict import set_entry
-
-    case = copy_case(TEMPLATE, tmp_path / "ldna")
-    set_entry(case / "system" / "caseParameters", "level", "0")
-    set_entry(case / "system" / "controlDict", "writeFormat", "ascii")
+    case = Case.copy_of(TEMPLATE, tmp_path / "ldna")
+    case.set("system/caseParameters", "level", "0")
+    case.set("system/controlDict", "writeFormat", "ascii")
     return case

@@ -7,12 +7,10 @@ allowed range, and no crash.  The unchanged case must run.
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 import pytest
+from ldna.case import Case
 
-from ldna.foamcase import run
-from ldna.foamdict import set_entry
 
 FV_OPTIONS = "constant/fvOptions"
 THERMO = "constant/thermophysicalProperties"
@@ -84,30 +82,30 @@ BAD_INPUTS = [
 
 
 @pytest.fixture
-def valid_case(stefan_case: Path) -> Path:
+def valid_case(stefan_case: Case) -> Case:
     """The meshed melting bar, short, with the enthalpy-porosity effect."""
     (stefan_case / FV_OPTIONS).write_text(VALID_FV_OPTIONS)
     control = stefan_case / "system" / "controlDict"
-    set_entry(control, "endTime", "0.01")
+    stefan_case.set("system/controlDict", "endTime", "0.01")
     control.write_text(control.read_text() + '\nlibs ("libldnaModels.so");\n')
     return stefan_case
 
 
-def test_valid_case_runs(valid_case: Path) -> None:
-    result = run(valid_case, "ldnaFoam", check=False)
+def test_valid_case_runs(valid_case: Case) -> None:
+    result = valid_case.run("ldnaFoam", check=False)
     assert result.returncode == 0, result.output[-2000:]
     assert "End" in result.output
 
 
 @pytest.mark.parametrize("description,file,entry,value,expected", BAD_INPUTS,
                          ids=[b[0] for b in BAD_INPUTS])
-def test_bad_input_stops_with_named_error(valid_case: Path, description: str, file: str,
+def test_bad_input_stops_with_named_error(valid_case: Case, description: str, file: str,
                                           entry: str, value: str | None,
                                           expected: list[str]) -> None:
     edit = "-remove" if value is None else f"-set '{value}'"
-    run(valid_case, f"foamDictionary -entry '{entry}' {edit} {file}", log_name="foamDictionary")
+    valid_case.run(f"foamDictionary -entry '{entry}' {edit} {file}", log_name="foamDictionary")
 
-    result = run(valid_case, "ldnaFoam", check=False)
+    result = valid_case.run("ldnaFoam", check=False)
     output = result.output
     error = output[output.find("FOAM FATAL"):]
     print(error[:600])

@@ -22,11 +22,8 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
+from ldna.case import Case
 from ldna.balance import WIRE_COLUMNS, wire_table
-from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances, read_internal_field,
-                           run, time_directories)
-from ldna.foamdict import set_entry
-from ldna.meshing import mesh_case
 
 VOLUME_TOLERANCE = 0.01
 ALPHA_BOUND = 1e-6
@@ -44,40 +41,40 @@ def droplet_radius(log_text: str) -> float:
 
 
 @pytest.fixture
-def insertion_box(tmp_path: Path) -> Path:
+def insertion_box(tmp_path: Path) -> Case:
     """The closed argon box of the droplet tests, 1/3 mm cells, droplets inserted."""
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
-    run(case, "foamDictionary -entry wireDroplets/mode -add insertion constant/fvOptions",
-        log_name="foamDictionary.mode")
+    case.run("foamDictionary -entry wireDroplets/mode -add insertion constant/fvOptions",
+             log_name="foamDictionary.mode")
     block_mesh = case / "system" / "blockMeshDict"
     block_mesh.write_text(block_mesh.read_text().replace("(20 16 32)", "(30 24 48)"))
-    run(case, "blockMesh")
+    case.run("blockMesh")
     return case
 
 
-def test_inserted_droplet_is_a_sphere_of_exact_volume(insertion_box: Path) -> None:
+def test_inserted_droplet_is_a_sphere_of_exact_volume(insertion_box: Case) -> None:
     case = insertion_box
     for entry in ("endTime", "writeInterval"):
-        set_entry(case / "system" / "controlDict", entry, END_OF_FIRST_DROPLET)
-    set_entry(case / "system" / "controlDict", "writeFormat", "ascii")
-    result = run(case, "ldnaFoam")
+        case.set("system/controlDict", entry, END_OF_FIRST_DROPLET)
+    case.set("system/controlDict", "writeFormat", "ascii")
+    result = case.run("ldnaFoam")
     log = result.output
 
     radius = droplet_radius(log)
-    last = time_directories(case)[-1]
-    alpha = read_internal_field(last / "alpha.metal")
-    run(case, "postProcess -func writeCellVolumes -latestTime", log_name="postProcess")
-    volumes = read_internal_field(last / "V")
+    last = case.times[-1]
+    alpha = case.field("alpha.metal", last)
+    case.run("postProcess -func writeCellVolumes -latestTime", log_name="postProcess")
+    volumes = case.field("V", last)
     n_droplets = sum(len(np.unique(values[:, 0])) - 1 for values in wire_table(case).values())
     assert n_droplets == 2, "one droplet per wire by the end of the first pulse"
     expected = n_droplets * 4 / 3 * math.pi * radius**3
     assert abs(np.sum(alpha * volumes) / expected - 1) < VOLUME_TOLERANCE
     assert alpha.max() >= BODY_FRACTION, "the droplet is a body of metal, not a smear"
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
 
     # The solver's metal mass is the mass the source reports it inserted
-    balances = read_balances(case)
+    balances = case.balances()
     added = sum(values[-1, WIRE_COLUMNS.index("addedMass")]
                 for values in wire_table(case).values())
     assert balances["metal_mass"][-1] - balances["metal_mass"][0] == pytest.approx(added, rel=1e-6)
@@ -85,10 +82,10 @@ def test_inserted_droplet_is_a_sphere_of_exact_volume(insertion_box: Path) -> No
 
 def test_insertion_stops_on_unresolved_droplets(tmp_path: Path) -> None:
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
-    run(case, "foamDictionary -entry wireDroplets/mode -add insertion constant/fvOptions",
-        log_name="foamDictionary.mode")
-    run(case, "blockMesh")
-    result = run(case, "ldnaFoam", check=False)
+    case.run("foamDictionary -entry wireDroplets/mode -add insertion constant/fvOptions",
+             log_name="foamDictionary.mode")
+    case.run("blockMesh")
+    result = case.run("ldnaFoam", check=False)
     assert result.returncode != 0
     text = result.output
     assert "FOAM FATAL IO ERROR" in text and "Segmentation" not in text
@@ -108,19 +105,19 @@ def test_resolved_droplet_flies_as_a_body(tmp_path: Path) -> None:
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
     options = "constant/fvOptions"
     for entry, value in (("mode", "insertion"), ("switchPhase", f"{EARLY_PULSE_PHASE:.4f}")):
-        run(case, f"foamDictionary -entry wireDroplets/{entry} -add {value} {options}",
-            log_name=f"foamDictionary.{entry}")
+        case.run(f"foamDictionary -entry wireDroplets/{entry} -add {value} {options}",
+                 log_name=f"foamDictionary.{entry}")
     # 0.222 mm cells: three per droplet radius
     block_mesh = case / "system" / "blockMeshDict"
     block_mesh.write_text(block_mesh.read_text().replace("(20 16 32)", "(45 36 72)"))
-    run(case, "blockMesh")
+    case.run("blockMesh")
     for entry in ("endTime", "writeInterval"):
-        set_entry(case / "system" / "controlDict", entry, FLIGHT_TIME)
-    set_entry(case / "system" / "controlDict", "writeFormat", "ascii")
-    result = run(case, "ldnaFoam")
+        case.set("system/controlDict", entry, FLIGHT_TIME)
+    case.set("system/controlDict", "writeFormat", "ascii")
+    result = case.run("ldnaFoam")
     assert "under-resolved" not in result.output
 
-    alpha = read_internal_field(time_directories(case)[-1] / "alpha.metal")
+    alpha = case.field("alpha.metal")
     print(f"after {FLIGHT_TIME} s of flight: largest metal fraction {alpha.max():.4f}")
     assert alpha.max() >= BODY_FRACTION, "a resolved droplet flies as a body of metal"
 
@@ -134,12 +131,11 @@ PREHEATED_BOX = "(5e-3 -6e-3 -2e-3) (15e-3 6e-3 0)"
 PREHEAT_TEMPERATURE = 1600.0
 
 
-def test_template_droplets_arrive_as_bodies_into_a_pool(ldna_case: Path) -> None:
+def test_template_droplets_arrive_as_bodies_into_a_pool(ldna_case: Case) -> None:
     case = ldna_case
-    control = case / "system" / "controlDict"
-    set_entry(control, "endTime", LANDED_TIME)
-    set_entry(control, "writeControl", "adjustableRunTime")
-    set_entry(control, "writeInterval", IN_FLIGHT_TIME)
+    case.set("system/controlDict", "endTime", LANDED_TIME)
+    case.set("system/controlDict", "writeControl", "adjustableRunTime")
+    case.set("system/controlDict", "writeInterval", IN_FLIGHT_TIME)
     set_fields = case / "system" / "setFieldsDict"
     text = set_fields.read_text()
     preheat = f"""
@@ -150,26 +146,26 @@ def test_template_droplets_arrive_as_bodies_into_a_pool(ldna_case: Path) -> None
     }}
 );"""
     set_fields.write_text(text[:text.rindex(");")] + preheat + text[text.rindex(");") + 2:])
-    mesh_case(case)
-    run(case, "setFields")
-    run(case, "ldnaFoam")
-    run(case, "postProcess -func writeCellCentres -time 0", log_name="postProcess")
-    z = read_internal_field(case / "0" / "C")[:, 2]
-    wire_height = 1e-3 * dictionary_scalar(case, "system/caseParameters", "wireHeight")
+    case.mesh()
+    case.run("setFields")
+    case.run("ldnaFoam")
+    case.run("postProcess -func writeCellCentres -time 0", log_name="postProcess")
+    z = case.field("C", "0")[:, 2]
+    wire_height = 1e-3 * case.scalar("system/caseParameters", "wireHeight")
 
     # At level 0 (1.5 cells per radius) a droplet in flight straddles cells:
     # it stays a body (cells mostly metal), where the paper's Gaussian source
     # put 0.11 at most into any cell at the coarsest level
-    in_flight = read_internal_field(case / IN_FLIGHT_TIME / "alpha.metal")
+    in_flight = case.field("alpha.metal", IN_FLIGHT_TIME)
     between = (z > 0.1 * wire_height) & (z < 0.9 * wire_height)
     print(f"in flight: largest metal fraction {in_flight[between].max():.4f}")
     assert in_flight[between].max() > 0.5, "droplets fly as bodies of metal"
 
-    last = time_directories(case)[-1]
-    alpha = read_internal_field(last / "alpha.metal")
-    liquid = read_internal_field(last / "liquidFraction")
+    last = case.times[-1]
+    alpha = case.field("alpha.metal", last)
+    liquid = case.field("liquidFraction", last)
     molten_substrate = (z < 0) & (alpha > 0.5) & (liquid > 0.5)
     print(f"landed: {molten_substrate.sum()} molten substrate cells")
     assert molten_substrate.sum() > 0, "a pool melts into the substrate"
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND

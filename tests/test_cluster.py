@@ -8,12 +8,11 @@ bead metrics in postProcessing/; Allclean removes the results.
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import PROJECT_DIR, run, time_directories
-from ldna.foamdict import set_entry
+from ldna.case import Case
+from ldna.foamcase import PROJECT_DIR
 from ldna.post import read_function_object_metrics
 from userpath import run_as_user
 
@@ -24,23 +23,23 @@ END_TIME = "0.005"
 N_RANKS = 2
 
 
-def shorten(case: Path) -> None:
+def shorten(case: Case) -> None:
     """End the template's scene after END_TIME and write then."""
     for entry in ("endTime", "writeInterval"):
-        set_entry(case / "system" / "controlDict", entry, END_TIME)
+        case.set("system/controlDict", entry, END_TIME)
 
 
-def check_parallel_run(case: Path) -> None:
+def check_parallel_run(case: Case) -> None:
     """Decomposed on N_RANKS, run to the end, reconstructed, metrics written."""
     assert (case / f"processor{N_RANKS - 1}").is_dir()
     assert not (case / f"processor{N_RANKS}").exists()
     log = (case / "log.ldnaFoam").read_text()
     assert "Finalising parallel run" in log and "FOAM FATAL" not in log
-    assert time_directories(case)[-1].name == END_TIME, "reconstructed end time"
+    assert case.times[-1].name == END_TIME, "reconstructed end time"
     assert len(read_function_object_metrics(case)) > 0
 
 
-def test_slurm_batch_script(ldna_case: Path) -> None:
+def test_slurm_batch_script(ldna_case: Case) -> None:
     case = ldna_case
     shorten(case)
     outcome = run_as_user("bash ldna.sbatch", cwd=case, SLURM_NTASKS=str(N_RANKS),
@@ -49,15 +48,15 @@ def test_slurm_batch_script(ldna_case: Path) -> None:
     check_parallel_run(case)
 
 
-def test_template_allrun_parallel(ldna_case: Path) -> None:
+def test_template_allrun_parallel(ldna_case: Case) -> None:
     case = ldna_case
     shorten(case)
-    run(case, f"foamDictionary -entry numberOfSubdomains -set {N_RANKS} system/decomposeParDict",
-        log_name="foamDictionary")
+    case.run(f"foamDictionary -entry numberOfSubdomains -set {N_RANKS} system/decomposeParDict",
+             log_name="foamDictionary")
     outcome = run_as_user("./Allrun -parallel", cwd=case, LDNA_DIR=str(PROJECT_DIR))
     assert outcome.returncode == 0, outcome.output[-3000:]
     check_parallel_run(case)
     outcome = run_as_user("./Allclean", cwd=case, LDNA_DIR=str(PROJECT_DIR))
     assert outcome.returncode == 0, outcome.output
-    assert [t.name for t in time_directories(case)] == ["0"]
+    assert [t.name for t in case.times] == ["0"]
     assert not (case / "processor0").exists()

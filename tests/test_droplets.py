@@ -28,10 +28,8 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
+from ldna.case import Case
 from ldna.balance import WIRE_COLUMNS, wire_table
-from ldna.foamcase import (alpha_bounds, dictionary_scalar, dictionary_value,
-                           read_balances, read_internal_field, run, time_directories)
-from ldna.foamdict import set_entry
 from ldna.material import Metal
 
 MASS_TOLERANCE = 0.01
@@ -47,43 +45,43 @@ DEFAULT_DROPLET_TEMPERATURE = 2100.0
 SOURCE = "constant/fvOptions"
 
 
-def wire_names(case: Path) -> list[str]:
+def wire_names(case: Case) -> list[str]:
     """Names of the wire dictionaries of the droplet source."""
-    text = dictionary_value(case, SOURCE, "wireDroplets/wires")
+    text = case.value(SOURCE, "wireDroplets/wires")
     return re.findall(r"^\s*(\w+)\s*$", text, re.M)
 
 
-def wire_mass_rate(case: Path, wire: str) -> float:
+def wire_mass_rate(case: Case, wire: str) -> float:
     """rho_w v_w pi R_w^2 of a wire [kg/s], from the case dictionary."""
-    density = dictionary_scalar(case, SOURCE, "wireDroplets/wireDensity")
-    feed = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/feedSpeed")
-    radius = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/wireRadius")
+    density = case.scalar(SOURCE, "wireDroplets/wireDensity")
+    feed = case.scalar(SOURCE, f"wireDroplets/wires/{wire}/feedSpeed")
+    radius = case.scalar(SOURCE, f"wireDroplets/wires/{wire}/wireRadius")
     return density * feed * math.pi * radius**2
 
 
-def wire_values(case: Path, wire: str, key: str) -> np.ndarray:
+def wire_values(case: Case, wire: str, key: str) -> np.ndarray:
     """Per-step values the droplet source writes for a wire (addedMass, onTime ...)."""
     return wire_table(case)[wire][:, WIRE_COLUMNS.index(key)]
 
 
-def finite_fields(time_dir: Path) -> bool:
-    """Whether T, U, p_rgh and alpha.metal hold only finite numbers."""
-    return all(np.all(np.isfinite(read_internal_field(time_dir / f)))
+def finite_fields(case: Case) -> bool:
+    """Whether T, U, p_rgh and alpha.metal of the latest time hold only finite numbers."""
+    return all(np.all(np.isfinite(case.field(f)))
                for f in ("T", "U", "p_rgh", "alpha.metal"))
 
 
 @pytest.fixture
-def droplet_case(tmp_path: Path) -> Path:
+def droplet_case(tmp_path: Path) -> Case:
     """The meshed closed box of argon under two wires."""
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
-    run(case, "blockMesh")
+    case.run("blockMesh")
     return case
 
 
-def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
+def test_droplet_mass_energy_and_switch(droplet_case: Case) -> None:
     case = droplet_case
-    run(case, "ldnaFoam")
-    balances = read_balances(case)
+    case.run("ldnaFoam")
+    balances = case.balances()
     start, end = balances[0], balances[-1]
     elapsed = end["time"] - start["time"]
     wires = wire_names(case)
@@ -107,7 +105,7 @@ def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
     added_enthalpy = 0.0
     for wire in wires:
         try:
-            temperature = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/temperature")
+            temperature = case.scalar(SOURCE, f"wireDroplets/wires/{wire}/temperature")
         except KeyError:
             temperature = DEFAULT_DROPLET_TEMPERATURE
         added_enthalpy += wire_values(case, wire, "addedMass")[-1] * metal.enthalpy(temperature)
@@ -118,13 +116,13 @@ def test_droplet_mass_energy_and_switch(droplet_case: Path) -> None:
     assert energy_error < ENERGY_TOLERANCE
 
     # Bounded, finite
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     print(f"alpha within [{low:.3e}, {high:.6f}]")
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
-    assert finite_fields(time_directories(case)[-1])
+    assert finite_fields(case)
 
 
-def expected_momentum(case: Path, t_end: float, samples: int = 200_000) -> np.ndarray:
+def expected_momentum(case: Case, t_end: float, samples: int = 200_000) -> np.ndarray:
     """Integral over [0, t_end] of mass rate times droplet velocity, summed over wires.
 
     Independent of the solver: the switch of eq. 18 and the velocity of
@@ -132,7 +130,7 @@ def expected_momentum(case: Path, t_end: float, samples: int = 200_000) -> np.nd
     """
     def get(entry: str, default: float | None = None) -> float:
         try:
-            return dictionary_scalar(case, SOURCE, f"wireDroplets/{entry}")
+            return case.scalar(SOURCE, f"wireDroplets/{entry}")
         except KeyError:
             if default is None:
                 raise
@@ -148,7 +146,7 @@ def expected_momentum(case: Path, t_end: float, samples: int = 200_000) -> np.nd
     v_xz = speed * math.cos(beta)
     total = np.zeros(3)
     for k, wire in enumerate(wire_names(case)):
-        nu = dictionary_scalar(case, SOURCE, f"wireDroplets/wires/{wire}/detachmentFrequency")
+        nu = case.scalar(SOURCE, f"wireDroplets/wires/{wire}/detachmentFrequency")
         on = np.sin(2 * np.pi * nu * t + math.asin(0.9)) > 0.8
         pulse_rate = wire_mass_rate(case, wire) / DEFAULT_DUTY_FRACTION
         sign = -1.0 if k % 2 == 0 else 1.0
@@ -159,28 +157,28 @@ def expected_momentum(case: Path, t_end: float, samples: int = 200_000) -> np.nd
     return total
 
 
-def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
+def test_droplet_momentum_without_gravity(droplet_case: Case) -> None:
     case = droplet_case
     (case / "constant" / "g").write_text(
         (case / "constant" / "g").read_text().replace("(0 0 -9.81)", "(0 0 0)"))
-    run(case, "foamDictionary -entry sigma -set 0 constant/thermophysicalProperties",
-        log_name="foamDictionary.sigma")
+    case.run("foamDictionary -entry sigma -set 0 constant/thermophysicalProperties",
+             log_name="foamDictionary.sigma")
     # Two droplet periods: the first droplet travels about 8 mm, the source
     # is 13 mm above the floor
     t_end = 0.02
-    set_entry(case / "system" / "controlDict", "endTime", str(t_end))
-    set_entry(case / "system" / "controlDict", "writeInterval", str(t_end))
-    run(case, "ldnaFoam")
-    run(case, "postProcess -func 'writeCellVolumes' -latestTime", log_name="writeCellVolumes")
-    run(case, "postProcess -func 'writeCellCentres' -latestTime", log_name="writeCellCentres")
+    case.set("system/controlDict", "endTime", str(t_end))
+    case.set("system/controlDict", "writeInterval", str(t_end))
+    case.run("ldnaFoam")
+    case.run("postProcess -func 'writeCellVolumes' -latestTime", log_name="writeCellVolumes")
+    case.run("postProcess -func 'writeCellCentres' -latestTime", log_name="writeCellCentres")
 
-    last = time_directories(case)[-1]
+    last = case.times[-1]
     metal = Metal.from_case(case)
-    volume = read_internal_field(last / "V")
-    alpha = read_internal_field(last / "alpha.metal")
-    temperature = read_internal_field(last / "T")
-    liquid = np.broadcast_to(read_internal_field(last / "liquidFraction"), alpha.shape)
-    velocity = read_internal_field(last / "U")
+    volume = case.field("V", last)
+    alpha = case.field("alpha.metal", last)
+    temperature = case.field("T", last)
+    liquid = np.broadcast_to(case.field("liquidFraction", last), alpha.shape)
+    velocity = case.field("U", last)
     rho_metal = np.array([metal.mass_density(T, g) for T, g in zip(temperature, liquid)])
     metal_momentum = ((alpha * rho_metal * volume)[:, None] * velocity).sum(axis=0)
 
@@ -190,9 +188,9 @@ def test_droplet_momentum_without_gravity(droplet_case: Path) -> None:
           f"{100 * error:.2f} %")
     assert error < MOMENTUM_TOLERANCE
     # Nothing reached a wall: the lowest metal is more than a cell above the floor
-    centres_z = read_internal_field(last / "Cz")
+    centres_z = case.field("Cz", last)
     assert centres_z[alpha > 1e-3].min() > 1e-3
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     assert low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
 
 
@@ -210,11 +208,11 @@ BAD_INPUTS = [
 
 @pytest.mark.parametrize("description,entry,value,expected", BAD_INPUTS,
                          ids=[b[0] for b in BAD_INPUTS])
-def test_bad_droplet_input(droplet_case: Path, description: str, entry: str, value: str,
+def test_bad_droplet_input(droplet_case: Case, description: str, entry: str, value: str,
                            expected: list[str]) -> None:
-    run(droplet_case, f"foamDictionary -entry '{entry}' -set '{value}' {SOURCE}",
-        log_name="foamDictionary")
-    result = run(droplet_case, "ldnaFoam", check=False)
+    droplet_case.run(f"foamDictionary -entry '{entry}' -set '{value}' {SOURCE}",
+                     log_name="foamDictionary")
+    result = droplet_case.run("ldnaFoam", check=False)
     error = result.output[result.output.find("FOAM FATAL"):]
     print(error[:500])
     assert result.returncode != 0

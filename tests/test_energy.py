@@ -7,12 +7,11 @@ latent, both phases) must equal P t.
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 import pytest
+from ldna.case import Case
 
-from ldna.foamcase import alpha_bounds, dictionary_value, read_balances, read_internal_field, run
 
 #: Allowed relative error of the enthalpy balance (required: 0.5 %)
 ENERGY_TOLERANCE = 0.005
@@ -21,24 +20,24 @@ ALPHA_BOUND_TOLERANCE = 1e-6
 
 
 @pytest.mark.parametrize("density", ["Boussinesq", "variable", "constant"])
-def test_enthalpy_change_equals_heat_input(energy_box_case: Path, density: str) -> None:
+def test_enthalpy_change_equals_heat_input(energy_box_case: Case, density: str) -> None:
     case = energy_box_case
     props = case / "constant" / "thermophysicalProperties"
     if density == "variable":
-        run(case, f"foamDictionary -entry metal/densityModel -set variable {props}",
-            log_name="foamDictionary.densityModel")
+        case.run(f"foamDictionary -entry metal/densityModel -set variable {props}",
+                 log_name="foamDictionary.densityModel")
     if density == "constant":
-        run(case, f"foamDictionary -entry metal/densityModel -set variable {props}",
-            log_name="foamDictionary.densityModel")
+        case.run(f"foamDictionary -entry metal/densityModel -set variable {props}",
+                 log_name="foamDictionary.densityModel")
         for phase in ("solid", "liquid"):
-            run(case, f"foamDictionary -entry metal/rho/{phase} -set 'constant 7500' {props}",
-                log_name=f"foamDictionary.{phase}")
+            case.run(f"foamDictionary -entry metal/rho/{phase} -set 'constant 7500' {props}",
+                     log_name=f"foamDictionary.{phase}")
 
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
-    power = float(dictionary_value(case, "constant/fvOptions",
-                                   "heater/injectionRateSuSp/T").strip("()").split()[0])
-    balances = read_balances(case)
+    power = float(case.value("constant/fvOptions",
+                             "heater/injectionRateSuSp/T").strip("()").split()[0])
+    balances = case.balances()
     start, end = balances[0], balances[-1]
     heat_in = power * (end["time"] - start["time"])
     change = end["enthalpy"] - start["enthalpy"]
@@ -50,8 +49,8 @@ def test_enthalpy_change_equals_heat_input(energy_box_case: Path, density: str) 
     # The metal has really gone through melting: half-way a front separates
     # solid from liquid metal, at the end all metal is liquid ...
     def metal_liquid_fraction(time: str) -> np.ndarray:
-        metal = read_internal_field(case / time / "alpha.metal") > 0.5
-        liquid = np.broadcast_to(read_internal_field(case / time / "liquidFraction"), metal.shape)
+        metal = case.field("alpha.metal", time) > 0.5
+        liquid = np.broadcast_to(case.field("liquidFraction", time), metal.shape)
         return liquid[metal]
 
     half_way = metal_liquid_fraction("0.6")
@@ -60,5 +59,5 @@ def test_enthalpy_change_equals_heat_input(energy_box_case: Path, density: str) 
     # ... no cell of a heated adiabatic box cools below the start temperature
     assert balances["T_min"].min() >= start["T_min"] - 1e-6 * start["T_min"]
     # ... and the metal fraction stays bounded
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     assert low > -ALPHA_BOUND_TOLERANCE and high < 1 + ALPHA_BOUND_TOLERANCE

@@ -13,15 +13,12 @@ from __future__ import annotations
 
 import math
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
 
+from ldna.case import Case
 from ldna.balance import evaporation_table
-from ldna.foamcase import (alpha_bounds, read_balances, read_internal_field, run,
-                           run_parallel, time_directories)
-from ldna.foamdict import set_entry
 from ldna.material import Metal
 
 #: Evaporation data of iron (docs/physics-data.md): boiling point at 1 atm,
@@ -58,7 +55,7 @@ evaporation
 """
 
 
-def write_fv_options(case: Path, entries: str) -> None:
+def write_fv_options(case: Case, entries: str) -> None:
     """Replace the case's fvOptions by ``entries``."""
     header = (case / "constant" / "fvOptions").read_text().split("// The test writes")[0]
     (case / "constant" / "fvOptions").write_text(header + entries + "\n")
@@ -70,15 +67,15 @@ def saturation_pressure(temperature: float) -> float:
         LATENT_HEAT * MOLAR_MASS / GAS_CONSTANT * (1 / BOILING_TEMPERATURE - 1 / temperature))
 
 
-def run_one_hot_step(case: Path, entries: str) -> tuple[np.ndarray, tuple[float, ...]]:
+def run_one_hot_step(case: Case, entries: str) -> tuple[np.ndarray, tuple[float, ...]]:
     """Run one step from a uniform SURFACE_TEMPERATURE; the balances and evaporation's last row."""
-    set_entry(case / "0" / "T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
+    case.set("0/T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
     write_fv_options(case, entries)
-    run(case, "ldnaFoam")
-    return read_balances(case), tuple(evaporation_table(case)[-1])[1:]
+    case.run("ldnaFoam")
+    return case.balances(), tuple(evaporation_table(case)[-1])[1:]
 
 
-def test_hertz_knudsen_rate_heat_and_recoil(laser_slab_case: Path) -> None:
+def test_hertz_knudsen_rate_heat_and_recoil(laser_slab_case: Case) -> None:
     case = laser_slab_case
     balances, (rate, evaporated, latent, sink, *recoil) = run_one_hot_step(
         case, evaporation_entry("hertzKnudsen", "recoilPressure yes;"))
@@ -108,16 +105,16 @@ def test_hertz_knudsen_rate_heat_and_recoil(laser_slab_case: Path) -> None:
     expected_recoil = RECOIL_FACTOR * p_sat * SURFACE_AREA
     print(f"recoil force {recoil[2]:.5f} N, 0.54 p_sat A = {expected_recoil:.5f} N")
     assert abs(-recoil[2] - expected_recoil) / expected_recoil < RATE_TOLERANCE
-    last = time_directories(case)[-1]
-    p = read_internal_field(last / "p_rgh")
-    alpha = read_internal_field(last / "alpha.metal")
+    last = case.times[-1]
+    p = case.field("p_rgh", last)
+    alpha = case.field("alpha.metal", last)
     step = p[alpha > 1 - 1e-6].mean() - p[alpha < 1e-6].mean()
     print(f"pressure step across the surface {step:.1f} Pa, 0.54 p_sat = "
           f"{RECOIL_FACTOR * p_sat:.1f} Pa")
     assert abs(step - RECOIL_FACTOR * p_sat) / (RECOIL_FACTOR * p_sat) < RATE_TOLERANCE
 
 
-def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Path) -> None:
+def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Case) -> None:
     """The recoil joins the capillary face force on processor faces too.
 
     The box is cut at the slab surface z = 2 mm, so that every surface face
@@ -125,16 +122,16 @@ def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Path) -> None:
     must still be 0.54 p_sat.
     """
     case = laser_slab_case
-    set_entry(case / "0" / "T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
+    case.set("0/T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
     write_fv_options(case, evaporation_entry("hertzKnudsen", "recoilPressure yes;"))
-    run(case, "foamDictionary -entry coeffs/n -set '(1 1 2)' system/decomposeParDict")
-    run(case, "decomposePar")
-    run_parallel(case, "ldnaFoam", 2)
-    run(case, "reconstructPar -latestTime")
+    case.run("foamDictionary -entry coeffs/n -set '(1 1 2)' system/decomposeParDict")
+    case.run("decomposePar")
+    case.run("ldnaFoam", n_procs=2)
+    case.run("reconstructPar -latestTime")
 
-    last = time_directories(case)[-1]
-    p = read_internal_field(last / "p_rgh")
-    alpha = read_internal_field(last / "alpha.metal")
+    last = case.times[-1]
+    p = case.field("p_rgh", last)
+    alpha = case.field("alpha.metal", last)
     expected = RECOIL_FACTOR * saturation_pressure(SURFACE_TEMPERATURE)
     steps = p[alpha > 1 - 1e-6].max() - p[alpha < 1e-6].min(), \
         p[alpha > 1 - 1e-6].min() - p[alpha < 1e-6].max()
@@ -144,7 +141,7 @@ def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Path) -> None:
         assert abs(step - expected) / expected < RATE_TOLERANCE
 
 
-def test_paper_model_rate_and_boiling_point(laser_slab_case: Path) -> None:
+def test_paper_model_rate_and_boiling_point(laser_slab_case: Case) -> None:
     """Eq. 38-40: the superheat evaporates w_e of the metal; the rest is left at T_b."""
     case = laser_slab_case
     balances, (rate, evaporated, latent, sink, *_) = run_one_hot_step(
@@ -167,32 +164,32 @@ def test_paper_model_rate_and_boiling_point(laser_slab_case: Path) -> None:
     print(f"enthalpy lost {energy_lost:.4f} J, vapour at T_b {vapour:.4f} J")
     assert abs(energy_lost - vapour) / vapour < RATE_TOLERANCE
 
-    last = time_directories(case)[-1]
-    temperature = read_internal_field(last / "T")
-    alpha = read_internal_field(last / "alpha.metal")
+    last = case.times[-1]
+    temperature = case.field("T", last)
+    alpha = case.field("alpha.metal", last)
     metal_cells = alpha > 0.5
     print(f"metal after the step: {temperature[metal_cells].min():.4f} .. "
           f"{temperature[metal_cells].max():.4f} K")
     assert np.abs(temperature[metal_cells] - BOILING_TEMPERATURE).max() < 0.1
 
 
-def test_surface_at_4000_k_stays_bounded(laser_slab_case: Path) -> None:
+def test_surface_at_4000_k_stays_bounded(laser_slab_case: Case) -> None:
     """Hertz-Knudsen with recoil, Marangoni with the sulphur sigma(T), a 4000 K surface."""
     case = laser_slab_case
     hot = 4000.0
-    set_entry(case / "system" / "controlDict", "endTime", "2e-3")
-    set_entry(case / "system" / "controlDict", "adjustTimeStep", "yes")
-    set_entry(case / "system" / "controlDict", "writeInterval", "1000")
+    case.set("system/controlDict", "endTime", "2e-3")
+    case.set("system/controlDict", "adjustTimeStep", "yes")
+    case.set("system/controlDict", "writeInterval", "1000")
     # The top 0.5 mm of the slab at 4000 K over a 2000 K liquid
-    set_entry(case / "0" / "T", "internalField", "uniform 2000")
-    run(case, "setFields")
+    case.set("0/T", "internalField", "uniform 2000")
+    case.run("setFields")
     (case / "system" / "setFieldsDict.hot").write_text(
         (case / "system" / "setFieldsDict").read_text().replace(
             "defaultFieldValues (volScalarFieldValue alpha.metal 0);",
             "defaultFieldValues ();").replace(
             "box (-1 -1 -1) (1 1 0.002);", "box (-1 -1 0.0015) (1 1 0.002);").replace(
             "volScalarFieldValue alpha.metal 1", f"volScalarFieldValue T {hot}"))
-    run(case, "setFields -dict system/setFieldsDict.hot", log_name="setFields.hot")
+    case.run("setFields -dict system/setFieldsDict.hot", log_name="setFields.hot")
     properties = case / "constant" / "thermophysicalProperties"
     text = properties.read_text()
     text, count = re.subn(r"^sigma\s*(\{[^}]*\}|[^;{]+;)",
@@ -205,12 +202,12 @@ marangoni
     type marangoniForce;
 }
 """)
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
-    low, high = alpha_bounds(case)
-    balances = read_balances(case)
-    last = time_directories(case)[-1]
-    temperature = read_internal_field(last / "T")
+    low, high = case.alpha_bounds()
+    balances = case.balances()
+    last = case.times[-1]
+    temperature = case.field("T", last)
     print(f"{len(balances)} steps to t = {balances['time'][-1]:.4g} s: alpha within "
           f"[{low:.3e}, {high:.9f}], T within [{balances['T_min'].min():.1f}, "
           f"{balances['T_max'].max():.1f}] K, evaporated "

@@ -23,9 +23,7 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.foamcase import (dictionary_value, read_internal_field, run, time_directories,
-                           write_internal_field)
-from ldna.foamdict import set_entry
+from ldna.case import Case
 
 #: The case's source [W], beam radius [m], material and speed
 POWER = 300.0
@@ -64,20 +62,20 @@ def eagar_tsai(x: float, y: float, z: float) -> float:
 
 
 @pytest.fixture
-def moving_source_case(tmp_path: Path) -> Path:
+def moving_source_case(tmp_path: Path) -> Case:
     case = prepare_test_case("movingSource", tmp_path, material_from_template=False)
     # The template's bounded second-order scheme for the metal is under test
-    assert "vanLeer" in dictionary_value(case, "system/fvSchemes", "divSchemes/div(rhoPhiMetal,h)")
-    run(case, "blockMesh")
+    assert "vanLeer" in case.value("system/fvSchemes", "divSchemes/div(rhoPhiMetal,h)")
+    case.run("blockMesh")
     return case
 
 
-def test_moving_source_matches_eagar_tsai(moving_source_case: Path) -> None:
+def test_moving_source_matches_eagar_tsai(moving_source_case: Case) -> None:
     case = moving_source_case
-    run(case, "ldnaFoam")
-    run(case, "postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
-    centres = read_internal_field(case / "0" / "C")
-    temperature = read_internal_field(time_directories(case)[-1] / "T")
+    case.run("ldnaFoam")
+    case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+    centres = case.field("C", "0")
+    temperature = case.field("T")
 
     for name, point in PROBES.items():
         cell = int(np.argmin(np.linalg.norm(centres - np.array(point), axis=1)))
@@ -135,7 +133,7 @@ def heat_conducted_into_gas(surface_temperature: float) -> float:
     return float(np.sum(capacity_factor / temperature * (temperature - AMBIENT)) * dz)
 
 
-def column_case(tmp_path: Path, slab_excess: float) -> Path:
+def column_case(tmp_path: Path, slab_excess: float) -> Case:
     """The energyBox case remeshed as a 1D column with no gravity and no sources."""
     case = prepare_test_case("energyBox", tmp_path, material_from_template=True)
     n = round(COLUMN_TOP / COLUMN_CELL)
@@ -168,23 +166,22 @@ boundary
     }}
 );
 """)
-    set_entry(case / "constant" / "g", "value", "(0 0 0)")
+    case.set("constant/g", "value", "(0 0 0)")
     fv_options = case / "constant" / "fvOptions"
     fv_options.write_text(fv_options.read_text().partition("heater")[0])
-    set_entry(case / "system" / "setFieldsDict", "defaultFieldValues",
-              f"(volScalarFieldValue T {AMBIENT:g})")
+    case.set("system/setFieldsDict", "defaultFieldValues",
+             f"(volScalarFieldValue T {AMBIENT:g})")
     setfields = case / "system" / "setFieldsDict"
     setfields.write_text(setfields.read_text().replace(
         "box (-1 -1 -1) (1 1 0.003);", f"box (-1 -1 -1) (1 1 {COLUMN_SURFACE:g});").replace(
         "fieldValues (volScalarFieldValue alpha.metal 1);",
         f"fieldValues (volScalarFieldValue alpha.metal 1 volScalarFieldValue T "
         f"{AMBIENT + slab_excess:g});"))
-    control = case / "system" / "controlDict"
-    set_entry(control, "endTime", f"{CONDUCTION_TIME:g}")
-    set_entry(control, "writeInterval", f"{CONDUCTION_TIME:g}")
-    set_entry(control, "maxDeltaT", "1e-3")
-    run(case, "blockMesh")
-    run(case, "setFields")
+    case.set("system/controlDict", "endTime", f"{CONDUCTION_TIME:g}")
+    case.set("system/controlDict", "writeInterval", f"{CONDUCTION_TIME:g}")
+    case.set("system/controlDict", "maxDeltaT", "1e-3")
+    case.run("blockMesh")
+    case.run("setFields")
     return case
 
 
@@ -203,10 +200,10 @@ def test_hot_slab_heats_argon_by_transient_conduction(tmp_path: Path, slab_exces
     the 900 K slab heated its argon 16.6 % too little (measured).
     """
     case = column_case(tmp_path, slab_excess)
-    run(case, "ldnaFoam")
-    last = time_directories(case)[-1]
-    temperature = read_internal_field(last / "T")
-    alpha = read_internal_field(last / "alpha.metal")
+    case.run("ldnaFoam")
+    last = case.times[-1]
+    temperature = case.field("T", last)
+    alpha = case.field("alpha.metal", last)
     z = (np.arange(len(temperature)) + 0.5) * COLUMN_CELL
     gas = z > COLUMN_SURFACE
     assert np.all(alpha[gas] < 1e-9) and np.all(alpha[~gas] > 1 - 1e-9)
@@ -240,22 +237,21 @@ def test_thin_film_cools_through_the_metal_it_lies_on(tmp_path: Path) -> None:
     the slab's top cell falls below FILM_TOLERANCE of its initial excess,
     not through the gas of its cell."""
     case = column_case(tmp_path, 0.0)
-    control = case / "system" / "controlDict"
-    set_entry(control, "endTime", f"{FILM_TIME:g}")
-    set_entry(control, "writeInterval", f"{FILM_TIME:g}")
-    set_entry(control, "maxDeltaT", "1e-4")
-    initial = time_directories(case)[0]
-    alpha = read_internal_field(initial / "alpha.metal")
+    case.set("system/controlDict", "endTime", f"{FILM_TIME:g}")
+    case.set("system/controlDict", "writeInterval", f"{FILM_TIME:g}")
+    case.set("system/controlDict", "maxDeltaT", "1e-4")
+    initial = case.times[0]
+    alpha = case.field("alpha.metal", initial)
     temperature = np.full(alpha.shape, AMBIENT)
     film = int(np.argmax(alpha < 0.5))
     alpha[film] = FILM_FRACTION
     temperature[film] = AMBIENT + FILM_EXCESS
-    write_internal_field(initial / "alpha.metal", alpha)
-    write_internal_field(initial / "T", temperature)
+    case.write_field("alpha.metal", time=initial.name, values=alpha)
+    case.write_field("T", time=initial.name, values=temperature)
 
-    run(case, "ldnaFoam")
-    last = time_directories(case)[-1]
-    temperature = read_internal_field(last / "T")
+    case.run("ldnaFoam")
+    last = case.times[-1]
+    temperature = case.field("T", last)
     excess = temperature[film] - temperature[film - 1]
     print(f"film {FILM_FRACTION:g} metal, {FILM_EXCESS:g} K above the slab: after "
           f"{FILM_TIME:g} s {excess:.3f} K above the slab's top cell "

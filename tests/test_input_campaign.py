@@ -32,9 +32,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.foamcase import (ENV_SCRIPT, alpha_bounds, copy_case, read_balances, run,
-                           time_directories)
-from ldna.foamdict import set_entry
+from ldna.case import Case
+from ldna.foamcase import ENV_SCRIPT
 
 pytestmark = pytest.mark.bad_input
 
@@ -133,22 +132,20 @@ def misspelling(key: str) -> str:
 
 
 @pytest.fixture(scope="module")
-def coarse_template(tmp_path_factory: pytest.TempPathFactory) -> Path:
+def coarse_template(tmp_path_factory: pytest.TempPathFactory) -> Case:
     """The template on 600 cells with Gaussian droplets, expanded, one step long."""
-    case = copy_case(TEMPLATE, tmp_path_factory.mktemp("campaign") / "base")
-    level = case / "system" / "meshLevels" / "level0"
+    case = Case.copy_of(TEMPLATE, tmp_path_factory.mktemp("campaign") / "base")
     for key, value in COARSE_CELLS.items():
-        set_entry(level, key, value)
-    control = case / "system" / "controlDict"
-    set_entry(control, "endTime", "1e-4")
-    set_entry(control, "writeInterval", "1")
-    run(case, "blockMesh")
-    run(case, "setFields")
+        case.set("system/meshLevels/level0", key, value)
+    case.set("system/controlDict", "endTime", "1e-4")
+    case.set("system/controlDict", "writeInterval", "1")
+    case.run("blockMesh")
+    case.run("setFields")
     for file in FILES:
-        run(case, f"foamDictionary -expand {file} > {file}.expanded && mv {file}.expanded {file}",
-            log_name="foamDictionary")
-    run(case, "foamDictionary -entry wireDroplets/mode -set gaussian constant/fvOptions",
-        log_name="foamDictionary")
+        case.run(f"foamDictionary -expand {file} > {file}.expanded && mv {file}.expanded {file}",
+                 log_name="foamDictionary")
+    case.run("foamDictionary -entry wireDroplets/mode -set gaussian constant/fvOptions",
+             log_name="foamDictionary")
     return case
 
 
@@ -179,7 +176,7 @@ def names_word(name: str, text: str) -> bool:
     return re.search(rf"(?<![A-Za-z0-9]){re.escape(name)}(?![A-Za-z0-9])", text) is not None
 
 
-def classify(entry: Entry, variant: str, returncode: int, output: str, case: Path) -> Outcome:
+def classify(entry: Entry, variant: str, returncode: int, output: str, case: Case) -> Outcome:
     """Named error, legal run or other, with the line that shows it."""
     error_start = output.find("FOAM FATAL")
     if returncode != 0:
@@ -194,8 +191,8 @@ def classify(entry: Entry, variant: str, returncode: int, output: str, case: Pat
         return Outcome(entry, variant, "other", "a misspelt key ran with the default")
     if "End" not in output or re.search(r"\b(nan|inf)\b", output, re.I):
         return Outcome(entry, variant, "other", "ran, but not to the end or with NaN/inf")
-    balances = read_balances(case)
-    low, high = alpha_bounds(case)
+    balances = case.balances()
+    low, high = case.alpha_bounds()
     finite = len(balances) > 0 and np.all(np.isfinite(balances["T_max"]))
     bounded = (finite and low > -ALPHA_BOUND and high < 1 + ALPHA_BOUND
                and balances["T_min"].min() > 0 and balances["T_max"].max() < TEMPERATURE_LIMIT)
@@ -207,9 +204,9 @@ def classify(entry: Entry, variant: str, returncode: int, output: str, case: Pat
                    f"T [{balances['T_min'].min():.0f}, {balances['T_max'].max():.0f}] K")
 
 
-def run_variant(base: Path, index: int, entry: Entry, variant: str) -> Outcome:
+def run_variant(base: Case, index: int, entry: Entry, variant: str) -> Outcome:
     """Copy the base case, apply one malformation, run one step, classify."""
-    case = base.parent / f"v{index:04d}"
+    case = Case(base.path.parent / f"v{index:04d}")
     shutil.copytree(base, case, ignore=shutil.ignore_patterns("log.*", "postProcessing"))
     script = (f'. "{ENV_SCRIPT}" && cd "{case}" && ({edit_command(entry, variant)}) '
               f'> log.edit 2>&1 && ldnaFoam > log.ldnaFoam 2>&1')
@@ -229,7 +226,7 @@ def run_variant(base: Path, index: int, entry: Entry, variant: str) -> Outcome:
     return outcome
 
 
-def test_every_malformed_entry_gets_a_named_error_or_runs_bounded(coarse_template: Path) -> None:
+def test_every_malformed_entry_gets_a_named_error_or_runs_bounded(coarse_template: Case) -> None:
     entries = [entry for file in FILES
                for entry in numeric_entries((coarse_template / file).read_text(), file)]
     assert len(entries) >= 40, [e.path for e in entries]
@@ -266,13 +263,13 @@ INCONSISTENT = [
 
 
 @pytest.mark.parametrize("path,value,expected", INCONSISTENT, ids=[c[0] for c in INCONSISTENT])
-def test_inconsistent_entries_get_their_own_error(coarse_template: Path, path: str, value: str,
+def test_inconsistent_entries_get_their_own_error(coarse_template: Case, path: str, value: str,
                                                   expected: list[str]) -> None:
-    case = coarse_template.parent / ("inconsistent_" + path.replace("/", "_"))
+    case = Case(coarse_template.path.parent / ("inconsistent_" + path.replace("/", "_")))
     shutil.copytree(coarse_template, case, ignore=shutil.ignore_patterns("log.*", "postProcessing"))
-    run(case, f"foamDictionary -entry '{path}' -set '{value}' constant/fvOptions",
-        log_name="foamDictionary")
-    result = run(case, "ldnaFoam", check=False)
+    case.run(f"foamDictionary -entry '{path}' -set '{value}' constant/fvOptions",
+             log_name="foamDictionary")
+    result = case.run("ldnaFoam", check=False)
     error = result.output[result.output.find("FOAM FATAL IO ERROR"):]
     print(error[:500])
     assert result.returncode != 0 and "FOAM FATAL IO ERROR" in result.output
@@ -315,46 +312,45 @@ def test_ldna_tools_reject_bad_input_in_one_line(tmp_path: Path, arguments: list
 def test_mesh_levels_rejects_a_domain_that_cannot_be_meshed(tmp_path: Path) -> None:
     ldna = Path(__file__).resolve().parents[1] / "build" / "venv" / "bin" / "ldna"
     for entry, value in [("length", "0"), ("width", "-28"), ("claddingHeight", "1e300")]:
-        case = copy_case(TEMPLATE, tmp_path / f"{entry}{value}")
-        set_entry(case / "system" / "caseParameters", entry, value)
+        case = Case.copy_of(TEMPLATE, tmp_path / f"{entry}{value}")
+        case.set("system/caseParameters", entry, value)
         result = subprocess.run([str(ldna), "mesh-levels", str(case)], capture_output=True,
                                 text=True, timeout=60, check=False)
         assert result.returncode != 0 and "Traceback" not in result.stderr
         assert f"{entry} must be in (0, 1e4) mm" in result.stderr
 
 
-def test_an_error_mid_run_leaves_the_last_written_time_restartable(coarse_template: Path) -> None:
+def test_an_error_mid_run_leaves_the_last_written_time_restartable(coarse_template: Case) -> None:
     """A welding speed that turns negative at 0.5 ms stops the run there with
     the entry named; the last written time holds every field and the run
     restarts from it once the input is fixed."""
-    case = coarse_template.parent / "midRunError"
+    case = Case(coarse_template.path.parent / "midRunError")
     shutil.copytree(coarse_template, case, ignore=shutil.ignore_patterns("log.*", "postProcessing"))
-    control = case / "system" / "controlDict"
-    set_entry(control, "endTime", "1e-3")
-    set_entry(control, "writeControl", "timeStep")
-    set_entry(control, "writeInterval", "1")
+    case.set("system/controlDict", "endTime", "1e-3")
+    case.set("system/controlDict", "writeControl", "timeStep")
+    case.set("system/controlDict", "writeInterval", "1")
     porosity = "enthalpyPorosity/weldingSpeed"
-    run(case, f"foamDictionary -entry {porosity} -set "
-              "'table ((0 0.0075) (5e-4 0.0075) (5.0001e-4 -1) (1 -1))' constant/fvOptions",
-        log_name="foamDictionary")
+    case.run(f"foamDictionary -entry {porosity} -set "
+             "'table ((0 0.0075) (5e-4 0.0075) (5.0001e-4 -1) (1 -1))' constant/fvOptions",
+             log_name="foamDictionary")
 
-    failed = run(case, "ldnaFoam", check=False)
+    failed = case.run("ldnaFoam", check=False)
     error = failed.output[failed.output.find("FOAM FATAL"):]
     print(error[:300])
     assert failed.returncode != 0 and "'weldingSpeed'" in error
 
-    written = [t for t in time_directories(case) if float(t.name) > 0]
+    written = [t for t in case.times if float(t.name) > 0]
     assert written, "no time was written before the error"
     last = written[-1]
     assert 0 < float(last.name) <= 5.0001e-4 + 1e-12
     fields = {"alpha.metal", "T", "U", "p", "p_rgh"}
     assert fields <= {path.name for path in last.iterdir()}, sorted(p.name for p in last.iterdir())
 
-    run(case, f"foamDictionary -entry {porosity} -set 'constant 0.0075' constant/fvOptions",
-        log_name="foamDictionary.fix")
-    set_entry(control, "startFrom", "latestTime")
-    restarted = run(case, "ldnaFoam", log_name="ldnaFoam.restart")
+    case.run(f"foamDictionary -entry {porosity} -set 'constant 0.0075' constant/fvOptions",
+             log_name="foamDictionary.fix")
+    case.set("system/controlDict", "startFrom", "latestTime")
+    restarted = case.run("ldnaFoam", log_name="ldnaFoam.restart")
     assert f"Create mesh for time = {last.name}" in restarted.output
     assert "End" in restarted.output
-    balances = read_balances(case)
+    balances = case.balances()
     assert np.all(np.isfinite(balances["T_max"])) and np.all(np.isfinite(balances["metal_mass"]))

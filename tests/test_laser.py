@@ -14,17 +14,14 @@ from __future__ import annotations
 
 import math
 import shutil
-from pathlib import Path
 from typing import Callable
 
 import numpy as np
 import pytest
 
-from ldna.foamcase import (read_function_object, read_internal_field, read_table, run,
-                           run_parallel, time_directories, write_internal_field)
-from ldna.foamdict import set_entry
 
 from conftest import TEST_CASES
+from ldna.case import Case
 
 #: Beam power [W], radius [m] and the slab's absorptivity in these tests
 POWER = 1000.0
@@ -81,15 +78,15 @@ laser
 """
 
 
-def write_fv_options(case: Path, entries: str) -> None:
+def write_fv_options(case: Case, entries: str) -> None:
     """Replace the case's fvOptions by ``entries``."""
     header = (case / "constant" / "fvOptions").read_text().split("// The test writes")[0]
     (case / "constant" / "fvOptions").write_text(header + entries + "\n")
 
 
-def laser_balances(case: Path) -> np.ndarray:
+def laser_balances(case: Case) -> np.ndarray:
     """The laser's target and power balance per time step (its postProcessing table)."""
-    rows = read_function_object(case, "laser", "power.dat")
+    rows = case.function_object("laser", "power.dat")
     assert len(rows), f"no laser table in {case}/postProcessing/laser"
     return np.array([tuple(row) for row in rows], dtype=[(n, float) for n in BALANCE_COLUMNS])
 
@@ -108,13 +105,13 @@ def assert_balance_closes(balance: np.ndarray) -> None:
         assert balance[share].min() >= -BALANCE_TOLERANCE * POWER, share
 
 
-def absorbed_per_cell(case: Path) -> np.ndarray:
+def absorbed_per_cell(case: Case) -> np.ndarray:
     """Absorbed power per cell [W] of the last written time (power density x volume)."""
-    last = time_directories(case)[-1]
-    return read_internal_field(last / "laserPowerDensity") * CELL**3
+    last = case.times[-1]
+    return case.field("laserPowerDensity", last) * CELL**3
 
 
-def cell_centres(case: Path) -> np.ndarray:
+def cell_centres(case: Case) -> np.ndarray:
     """Cell centres of the slab mesh (i fastest, then j, then k: blockMesh order)."""
     n = (32, 32, 16)
     k, j, i = np.meshgrid(*(np.arange(m) for m in n[::-1]), indexing="ij")
@@ -126,7 +123,7 @@ MODELS = ("gaussianSurface", "beerLambert", "monteCarlo")
 
 
 @pytest.mark.parametrize("model", MODELS)
-def test_absorbed_power_is_a_times_P(laser_slab_case: Path, model: str) -> None:
+def test_absorbed_power_is_a_times_P(laser_slab_case: Case, model: str) -> None:
     """A flat slab absorbs a P with each model at its default settings.
 
     Monte-Carlo rays reflect at the surface and leave (nothing sends them
@@ -135,7 +132,7 @@ def test_absorbed_power_is_a_times_P(laser_slab_case: Path, model: str) -> None:
     """
     case = laser_slab_case
     write_fv_options(case, laser_entry(model))
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
     balance = laser_balances(case)
     absorbed = absorbed_per_cell(case).sum()
@@ -149,10 +146,10 @@ def test_absorbed_power_is_a_times_P(laser_slab_case: Path, model: str) -> None:
     assert_balance_closes(balance)
 
 
-def test_beer_lambert_decays_exponentially(laser_slab_case: Path) -> None:
+def test_beer_lambert_decays_exponentially(laser_slab_case: Case) -> None:
     case = laser_slab_case
     write_fv_options(case, laser_entry("beerLambert"))
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
     absorbed = absorbed_per_cell(case)
     z = cell_centres(case)[:, 2]
@@ -169,7 +166,7 @@ def test_beer_lambert_decays_exponentially(laser_slab_case: Path) -> None:
     assert absorbed[z > CENTRE[2]].sum() < 1e-9 * POWER
 
 
-def test_monte_carlo_sampling_noise(laser_slab_case: Path) -> None:
+def test_monte_carlo_sampling_noise(laser_slab_case: Case) -> None:
     """The Monte-Carlo beam's footprint converges like 1/sqrt(N).
 
     On the flat slab every ray gives a at the surface, so the absorbed total
@@ -180,22 +177,22 @@ def test_monte_carlo_sampling_noise(laser_slab_case: Path) -> None:
     """
     case = laser_slab_case
     steps = 8
-    set_entry(case / "system" / "controlDict", "endTime", f"{steps * 1e-5:g}")
-    set_entry(case / "system" / "controlDict", "writeInterval", "1")
+    case.set("system/controlDict", "endTime", f"{steps * 1e-5:g}")
+    case.set("system/controlDict", "writeInterval", "1")
     centres = cell_centres(case)
     inside = np.hypot(centres[:, 0] - CENTRE[0], centres[:, 1] - CENTRE[1]) < BEAM_RADIUS
     spreads = {}
     for n_rays in (250, 1000, 4000):
         write_fv_options(case, laser_entry("monteCarlo", coeffs=f"nRays {n_rays}; seed 7;"))
-        run(case, "ldnaFoam", log_name=f"ldnaFoam.{n_rays}")
+        case.run("ldnaFoam", log_name=f"ldnaFoam.{n_rays}")
         balance = laser_balances(case)
         assert len(balance) == steps
         assert_balance_closes(balance)
         assert np.abs(absorbed_total(balance) - ABSORPTIVITY * POWER).max() < (
             ABSORBED_TOLERANCE * ABSORPTIVITY * POWER)
         central = np.array([
-            (read_internal_field(time / "laserPowerDensity") * CELL**3)[inside].sum()
-            for time in time_directories(case)[1:]])
+            (case.field("laserPowerDensity", time) * CELL**3)[inside].sum()
+            for time in case.times[1:]])
         spreads[n_rays] = central.std(ddof=1)
         print(f"N = {n_rays}: within r_l {central.mean():.2f} +- {spreads[n_rays]:.2f} W")
 
@@ -206,7 +203,7 @@ def test_monte_carlo_sampling_noise(laser_slab_case: Path) -> None:
 
 
 @pytest.mark.parametrize("model", ("beerLambert", "monteCarlo"))
-def test_serial_and_parallel_agree(laser_slab_case: Path, model: str) -> None:
+def test_serial_and_parallel_agree(laser_slab_case: Case, model: str) -> None:
     """A tilted beam crosses the processor boundary at x = 4 mm.
 
     Beer-Lambert rays are deterministic: the decomposed run must absorb the
@@ -214,13 +211,13 @@ def test_serial_and_parallel_agree(laser_slab_case: Path, model: str) -> None:
     processor count; the totals agree within 0.5 %.
     """
     case = laser_slab_case
-    run(case, "decomposePar")
+    case.run("decomposePar")
     write_fv_options(case, laser_entry(model, extra="angle 30;"))
-    run(case, "ldnaFoam", log_name="ldnaFoam.serial")
+    case.run("ldnaFoam", log_name="ldnaFoam.serial")
     serial = absorbed_per_cell(case)
     serial_balance = laser_balances(case)
-    run_parallel(case, "ldnaFoam", 2, log_name="ldnaFoam.parallel")
-    run(case, "reconstructPar -latestTime", log_name="reconstructPar")
+    case.run("ldnaFoam", n_procs=2, log_name="ldnaFoam.parallel")
+    case.run("reconstructPar -latestTime", log_name="reconstructPar")
     parallel = absorbed_per_cell(case)
     parallel_balance = laser_balances(case)
     assert_balance_closes(parallel_balance)
@@ -245,7 +242,7 @@ def fresnel_absorptivity(theta: float, n: float, k: float) -> float:
 
 
 @pytest.mark.parametrize("angle", [0.0, 45.0, 75.0])
-def test_fresnel_absorptivity_follows_the_incidence_angle(laser_slab_case: Path,
+def test_fresnel_absorptivity_follows_the_incidence_angle(laser_slab_case: Case,
                                                           angle: float) -> None:
     """Iron at 1.03 um (n 3.2, k 4.2) lit at the laser angle, default settings.
 
@@ -259,7 +256,7 @@ def test_fresnel_absorptivity_follows_the_incidence_angle(laser_slab_case: Path,
                           f"fresnel {{ n {n}; k {k}; }}")
     write_fv_options(case, entry.replace(f"beamRadius      {BEAM_RADIUS}",
                                          f"beamRadius      {FRESNEL_BEAM_RADIUS}"))
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
     balance = laser_balances(case)
     absorbed = absorbed_total(balance)[-1]
@@ -269,18 +266,18 @@ def test_fresnel_absorptivity_follows_the_incidence_angle(laser_slab_case: Path,
     assert_balance_closes(balance)
 
 
-def test_beam_follows_the_oscillation(laser_slab_case: Path) -> None:
+def test_beam_follows_the_oscillation(laser_slab_case: Case) -> None:
     """Target and absorbed power move as offset + A sin(2 pi f t) across the seam."""
     case = laser_slab_case
     amplitude, frequency = 2e-3, 10.0
-    set_entry(case / "system" / "controlDict", "deltaT", "0.005")
-    set_entry(case / "system" / "controlDict", "maxDeltaT", "0.005")
-    set_entry(case / "system" / "controlDict", "endTime", "0.02")
+    case.set("system/controlDict", "deltaT", "0.005")
+    case.set("system/controlDict", "maxDeltaT", "0.005")
+    case.set("system/controlDict", "endTime", "0.02")
     write_fv_options(case, laser_entry(
         "gaussianSurface",
         extra=f"oscillationAmplitude {amplitude}; oscillationFrequency {frequency}; "
               "offset constant (0.0005 0 0);"))
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
     balances = laser_balances(case)
     expected_y = CENTRE[1] + amplitude * np.sin(2 * np.pi * frequency * balances["time"])
@@ -296,7 +293,7 @@ def test_beam_follows_the_oscillation(laser_slab_case: Path) -> None:
     assert abs(centroid[0] - balances["x"][-1]) < 0.2 * CELL
 
 
-def box_mesh(case: Path, x: tuple[float, float, int], y: tuple[float, float, int],
+def box_mesh(case: Case, x: tuple[float, float, int], y: tuple[float, float, int],
              z_levels: list[float], z_cells: list[int]) -> None:
     """A box [mm] of stacked blocks: x and y (start, end, cells), blocks between
     the z_levels with z_cells layers each (cells of unequal heights where
@@ -337,16 +334,16 @@ boundary
     }}
 );
 """)
-    run(case, "blockMesh")
+    case.run("blockMesh")
     shutil.copy(TEST_CASES / "laserSlab" / "0" / "alpha.metal", case / "0" / "alpha.metal")
 
 
-def cell_geometry(case: Path) -> tuple[np.ndarray, np.ndarray]:
+def cell_geometry(case: Case) -> tuple[np.ndarray, np.ndarray]:
     """Cell centres and sizes (dx, dy, dz) of a box mesh of cuboid cells [m]."""
-    run(case, "postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
-    run(case, "postProcess -func writeCellVolumes -time 0", log_name="writeCellVolumes")
-    centres = read_internal_field(case / "0" / "C")
-    volumes = read_internal_field(case / "0" / "V")
+    case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+    case.run("postProcess -func writeCellVolumes -time 0", log_name="writeCellVolumes")
+    centres = case.field("C", "0")
+    volumes = case.field("V", "0")
     xs, ys = np.unique(centres[:, 0]), np.unique(centres[:, 1])
     dx, dy = xs[1] - xs[0], ys[1] - ys[0]
     sizes = np.stack([np.full(len(centres), dx), np.full(len(centres), dy),
@@ -383,16 +380,16 @@ ANY_MESHES = {
 
 @pytest.mark.parametrize("model", MODELS)
 @pytest.mark.parametrize("mesh", list(ANY_MESHES))
-def test_configured_power_on_any_mesh(laser_slab_case: Path, model: str, mesh: str) -> None:
+def test_configured_power_on_any_mesh(laser_slab_case: Case, model: str, mesh: str) -> None:
     """The absorbed power is a P within 0.5 % whatever the cells at the surface."""
     case = laser_slab_case
     across, z_levels, z_cells, surface = ANY_MESHES[mesh]
     box_mesh(case, (0, 8, across), (0, 8, across), z_levels, z_cells)
     centres, sizes = cell_geometry(case)
     alpha = fraction_below(centres, sizes, lambda x, y: np.full_like(x, surface * 1e-3))
-    write_internal_field(case / "0" / "alpha.metal", alpha)
+    case.write_field("alpha.metal", time="0", values=alpha)
     write_fv_options(case, laser_entry(model))
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
     balance = laser_balances(case)
     absorbed = absorbed_total(balance)[-1]
@@ -412,7 +409,7 @@ GROOVE_BEAM_RADIUS = 0.5e-3
 
 
 @pytest.mark.parametrize("n_procs", [1, 2])
-def test_monte_carlo_multiple_reflections_in_a_v_groove(laser_slab_case: Path,
+def test_monte_carlo_multiple_reflections_in_a_v_groove(laser_slab_case: Case,
                                                         n_procs: int) -> None:
     case = laser_slab_case
     box_mesh(case, (0, 8, 64), (3, 5, 16), [0, 4], [32])
@@ -420,17 +417,17 @@ def test_monte_carlo_multiple_reflections_in_a_v_groove(laser_slab_case: Path,
     bottom_x, bottom_z = GROOVE_BOTTOM
     alpha = fraction_below(centres, sizes,
                            lambda x, y: np.minimum(bottom_z + np.abs(x - bottom_x), 4e-3))
-    write_internal_field(case / "0" / "alpha.metal", alpha)
+    case.write_field("alpha.metal", time="0", values=alpha)
     entry = laser_entry("monteCarlo")
     entry = entry.replace(f"position        ({CENTRE[0]} {CENTRE[1]} {CENTRE[2]})",
                           f"position        ({GROOVE_BEAM_X} {CENTRE[1]} {CENTRE[2]})")
     write_fv_options(case, entry.replace(f"beamRadius      {BEAM_RADIUS}",
                                          f"beamRadius      {GROOVE_BEAM_RADIUS}"))
     if n_procs > 1:
-        run(case, "decomposePar")
-        run_parallel(case, "ldnaFoam", n_procs)
+        case.run("decomposePar")
+        case.run("ldnaFoam", n_procs=n_procs)
     else:
-        run(case, "ldnaFoam")
+        case.run("ldnaFoam")
 
     balance = laser_balances(case)
     absorbed = absorbed_total(balance)[-1]
@@ -459,7 +456,7 @@ def sphere_shadow(mu: float | None) -> float:
 
 
 @pytest.mark.parametrize("model", MODELS)
-def test_metal_in_the_beam_shades_the_surface(laser_slab_case: Path, model: str) -> None:
+def test_metal_in_the_beam_shades_the_surface(laser_slab_case: Case, model: str) -> None:
     """A sphere in the beam takes its share; the slab beneath gets the rest.
 
     Monte-Carlo rays reflected by the sphere may land on the slab; without
@@ -483,13 +480,13 @@ def test_metal_in_the_beam_shades_the_surface(laser_slab_case: Path, model: str)
                 inside += np.linalg.norm(centres[near] + (ox, oy, oz) - centre,
                                          axis=1) < SPHERE_RADIUS
     alpha[near] = np.maximum(alpha[near], inside / 64)
-    write_internal_field(case / "0" / "alpha.metal", alpha)
+    case.write_field("alpha.metal", time="0", values=alpha)
     coeffs = "maxScatteringEvents 0;" if model == "monteCarlo" else ""
     write_fv_options(case, laser_entry(model, coeffs=coeffs))
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
-    last = time_directories(case)[-1]
-    absorbed = read_internal_field(last / "laserPowerDensity") * sizes.prod(axis=1)
+    last = case.times[-1]
+    absorbed = case.field("laserPowerDensity", last) * sizes.prod(axis=1)
     slab = absorbed[centres[:, 2] < CENTRE[2]].sum()
     share = sphere_shadow(MU if model == "beerLambert" else None)
     expected = ABSORPTIVITY * POWER * (1 - share)
@@ -499,11 +496,11 @@ def test_metal_in_the_beam_shades_the_surface(laser_slab_case: Path, model: str)
     assert_balance_closes(laser_balances(case))
 
 
-def test_radiation_loss_of_a_hot_surface(laser_slab_case: Path) -> None:
+def test_radiation_loss_of_a_hot_surface(laser_slab_case: Case) -> None:
     """eps sigma (T^4 - T0^4) A from a flat surface at uniform temperature."""
     case = laser_slab_case
     temperature, ambient, emissivity = 2000.0, 300.0, 0.4
-    set_entry(case / "0" / "T", "internalField", f"uniform {temperature}")
+    case.set("0/T", "internalField", f"uniform {temperature}")
     write_fv_options(case, f"""
 surfaceLosses
 {{
@@ -514,9 +511,9 @@ surfaceLosses
     ambientTemperature  {ambient};
 }}
 """)
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
-    radiated = float(read_table(case, "surfaceLosses", "losses")["radiated"][0])
+    radiated = float(case.table("surfaceLosses", "losses")["radiated"][0])
     stefan_boltzmann = 5.670374419e-8
     expected = emissivity * stefan_boltzmann * (temperature**4 - ambient**4) * SURFACE_AREA
     print(f"radiated {radiated:.5f} W, eps sigma (T^4 - T0^4) A = {expected:.5f} W")
@@ -552,11 +549,11 @@ surfaceLosses
 
 @pytest.mark.parametrize("description,entries,expected", BAD_INPUTS,
                          ids=[b[0].replace(" ", "_") for b in BAD_INPUTS])
-def test_bad_laser_input(laser_slab_case: Path, description: str, entries: str,
+def test_bad_laser_input(laser_slab_case: Case, description: str, entries: str,
                          expected: list[str]) -> None:
     case = laser_slab_case
     write_fv_options(case, entries)
-    result = run(case, "ldnaFoam", check=False)
+    result = case.run("ldnaFoam", check=False)
     error = result.output
     assert result.returncode != 0, description
     assert "FOAM FATAL IO ERROR" in error, description

@@ -13,9 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances,
-                           read_internal_field, run, time_directories)
-from ldna.foamdict import set_entry
+from ldna.case import Case
 
 #: Injection rate [kg/s]: 10 % of the box's metal in 0.5 s
 INJECTION_RATE = 2.7e-5
@@ -38,19 +36,19 @@ metalInjection
 """
 
 
-def test_metal_mass_source_is_conserved(energy_box_case: Path) -> None:
+def test_metal_mass_source_is_conserved(energy_box_case: Case) -> None:
     case = energy_box_case
     (case / "constant" / "fvOptions").write_text(INJECTION)
     # Liquid metal at a uniform temperature above the liquidus
     liquid_temperature = 1800.0
-    run(case, f"foamDictionary -entry internalField -set 'uniform {liquid_temperature}' 0/T",
-        log_name="foamDictionary.T")
-    set_entry(case / "system" / "controlDict", "endTime", "0.5")
-    set_entry(case / "system" / "controlDict", "writeInterval", "0.5")
+    case.run(f"foamDictionary -entry internalField -set 'uniform {liquid_temperature}' 0/T",
+             log_name="foamDictionary.T")
+    case.set("system/controlDict", "endTime", "0.5")
+    case.set("system/controlDict", "writeInterval", "0.5")
 
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
-    balances = read_balances(case)
+    balances = case.balances()
     start, end = balances[0], balances[-1]
     injected = INJECTION_RATE * (end["time"] - start["time"])
     gain = end["metal_mass"] - start["metal_mass"]
@@ -61,24 +59,24 @@ def test_metal_mass_source_is_conserved(energy_box_case: Path) -> None:
     # Temperature unchanged, metal fraction bounded
     assert abs(balances["T_min"].min() - liquid_temperature) < 1e-6 * liquid_temperature
     assert abs(balances["T_max"].max() - liquid_temperature) < 1e-6 * liquid_temperature
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     assert low > -1e-6 and high < 1 + 1e-6
 
     # The gas is compressed, not removed: at the end its mass, from the ideal
     # gas law with the computed pressure, equals its initial mass
-    run(case, "postProcess -func writeCellVolumes -latestTime", log_name="writeCellVolumes")
-    last = time_directories(case)[-1]
-    volume = read_internal_field(last / "V")
-    gas_constant = dictionary_scalar(case, "constant/thermophysicalProperties", "gas/R")
+    case.run("postProcess -func writeCellVolumes -latestTime", log_name="writeCellVolumes")
+    last = case.times[-1]
+    volume = case.field("V", last)
+    gas_constant = case.scalar("constant/thermophysicalProperties", "gas/R")
 
     def gas_volume(time: Path) -> np.ndarray:
-        metal = np.broadcast_to(read_internal_field(time / "alpha.metal"), volume.shape)
+        metal = np.broadcast_to(case.field("alpha.metal", time), volume.shape)
         return (1 - metal) * volume
 
-    initial_pressure = dictionary_scalar(case, "0/p_rgh", "internalField")
+    initial_pressure = case.scalar("0/p_rgh", "internalField")
     initial_gas_volume = gas_volume(case / "0").sum()
     gas_mass_start = initial_pressure / (gas_constant * liquid_temperature) * initial_gas_volume
-    pressure = np.broadcast_to(read_internal_field(last / "p"), volume.shape)
+    pressure = np.broadcast_to(case.field("p", last), volume.shape)
     gas_mass_end = float(np.sum(gas_volume(last) * pressure / (gas_constant * liquid_temperature)))
     gas_error = abs(gas_mass_end - gas_mass_start) / gas_mass_start
     print(f"gas volume {initial_gas_volume:.4e} -> {gas_volume(last).sum():.4e} m3, "

@@ -17,9 +17,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ldna.case import Case
 from ldna import meshing
-from ldna.foamcase import dictionary_value, read_internal_field, run
-from ldna.foamdict import read_scalars, set_entry
+from ldna.foamdict import read_scalars
 
 TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
 #: Relative cell-volume difference of the gmsh and block meshes: both place
@@ -37,9 +37,9 @@ def test_level_files_match_case_parameters(level: int) -> None:
     written = (TEMPLATE / "system" / "meshLevels" / f"level{level}").read_text()
     assert written == expected, "run 'ldna mesh-levels cases/ldna' after changing the geometry"
 
-def cell_field(case: Path, function: str, field: str) -> np.ndarray:
-    run(case, f"postProcess -func {function} -time 0", log_name=f"postProcess.{function}")
-    return read_internal_field(case / "0" / field)
+def cell_field(case: Case, function: str, field: str) -> np.ndarray:
+    case.run(f"postProcess -func {function} -time 0", log_name=f"postProcess.{function}")
+    return case.field(field, "0")
 
 def zone_mask(centres: np.ndarray, p: dict[str, float], shrink: float) -> np.ndarray:
     """Cells whose centre is inside the process zone shrunk by ``shrink`` [m]."""
@@ -56,10 +56,10 @@ def zone_mask(centres: np.ndarray, p: dict[str, float], shrink: float) -> np.nda
     return bead | column
 
 @pytest.mark.parametrize("level", [0, 1])
-def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Path, level: int) -> None:
-    set_entry(ldna_case / "system" / "caseParameters", "level", str(level))
+def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Case, level: int) -> None:
+    ldna_case.set("system/caseParameters", "level", str(level))
     n_cells = meshing.mesh_case(ldna_case)
-    checked = run(ldna_case, "checkMesh", check=False)
+    checked = ldna_case.run("checkMesh", check=False)
     assert "Mesh OK" in checked.output
 
     p = read_scalars(ldna_case / "system" / "caseParameters")
@@ -87,18 +87,18 @@ def test_process_zone_must_enclose_the_process(entry: str, value: str, message: 
     with pytest.raises(ValueError, match=message):
         meshing.check_process_zone(parameters)
 
-def sorted_cell_volumes(case: Path) -> np.ndarray:
+def sorted_cell_volumes(case: Case) -> np.ndarray:
     """The case's cell volumes, in increasing order."""
     return np.sort(cell_field(case, "writeCellVolumes", "V"))
 
-def test_gmsh_route_gives_the_block_mesh(ldna_case: Path, tmp_path: Path) -> None:
+def test_gmsh_route_gives_the_block_mesh(ldna_case: Case, tmp_path: Path) -> None:
     """'Allrun -gmsh' meshes the template with gmsh: the same hexahedra as blockMesh, and runs."""
     block = ldna_case
-    gmsh_case = Path(shutil.copytree(block, tmp_path / "gmsh"))
-    run(block, "blockMesh")
-    run(gmsh_case, f"{Path(sys.executable).parent / 'ldna'} gmsh-mesh .", log_name="gmsh")
+    gmsh_case = Case(Path(shutil.copytree(block, tmp_path / "gmsh")))
+    block.run("blockMesh")
+    gmsh_case.run(f"{Path(sys.executable).parent / 'ldna'} gmsh-mesh .", log_name="gmsh")
 
-    checked = run(gmsh_case, "checkMesh", check=False)
+    checked = gmsh_case.run("checkMesh", check=False)
     assert "Mesh OK" in checked.output
     block_volumes, gmsh_volumes = sorted_cell_volumes(block), sorted_cell_volumes(gmsh_case)
     assert block_volumes.shape == gmsh_volumes.shape
@@ -106,17 +106,17 @@ def test_gmsh_route_gives_the_block_mesh(ldna_case: Path, tmp_path: Path) -> Non
     print(f"{len(gmsh_volumes)} cells; largest cell volume difference {difference:.2e}")
     assert difference < GMSH_VOLUME_TOLERANCE
     for patch in ("substrateInlet", "substrateOutlet", "substrateWalls", "atmosphere"):
-        face_counts = [int(run(case, f"foamDictionary -entry entry0/{patch}/nFaces -value "
-                                     "constant/polyMesh/boundary", log_name="nFaces").output)
+        face_counts = [int(case.run(f"foamDictionary -entry entry0/{patch}/nFaces -value "
+                                    "constant/polyMesh/boundary", log_name="nFaces").output)
                        for case in (block, gmsh_case)]
         assert face_counts[0] == face_counts[1], patch
-    assert dictionary_value(gmsh_case, "constant/polyMesh/boundary",
-                            "entry0/substrateWalls/type") == "wall"
+    assert gmsh_case.value("constant/polyMesh/boundary",
+                           "entry0/substrateWalls/type") == "wall"
 
     # The process zone refines it as it refines the block mesh, and the
     # scene runs on it
-    run(gmsh_case, "snappyHexMesh -overwrite")
-    set_entry(gmsh_case / "system" / "controlDict", "endTime", GMSH_RUN_TIME)
-    run(gmsh_case, "setFields")
-    result = run(gmsh_case, "ldnaFoam")
+    gmsh_case.run("snappyHexMesh -overwrite")
+    gmsh_case.set("system/controlDict", "endTime", GMSH_RUN_TIME)
+    gmsh_case.run("setFields")
+    result = gmsh_case.run("ldnaFoam")
     assert "\nEnd\n" in result.output

@@ -7,14 +7,11 @@ enters.  The template's own files run with every effect but the porosity removed
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 
-from ldna.foamcase import (alpha_bounds, dictionary_scalar, read_balances,
-                           read_function_object, read_internal_field, run, time_directories)
-from ldna.foamdict import keep_blocks, set_entry
-from ldna.meshing import mesh_case
+from ldna.case import Case
+from ldna.foamdict import keep_blocks
 
 #: Allowed relative velocity error of the solid substrate (required: 1 %)
 VELOCITY_TOLERANCE = 0.01
@@ -25,24 +22,24 @@ FLOW_BALANCE_TOLERANCE = 0.01
 GAS_SPEED_LIMIT = 1.5
 
 
-def keep_only_porosity(case: Path) -> None:
+def keep_only_porosity(case: Case) -> None:
     """List only the enthalpy-porosity effect in constant/fvOptions."""
     keep_blocks(case / "constant" / "fvOptions", ["enthalpyPorosity"])
 
 
-def test_cold_substrate_moves_at_welding_speed(ldna_case: Path) -> None:
+def test_cold_substrate_moves_at_welding_speed(ldna_case: Case) -> None:
     case = ldna_case
     keep_only_porosity(case)
-    set_entry(case / "system" / "controlDict", "endTime", "0.4")
-    set_entry(case / "system" / "controlDict", "writeInterval", "0.2")
-    mesh_case(case)
-    run(case, "setFields")
-    run(case, "ldnaFoam")
+    case.set("system/controlDict", "endTime", "0.4")
+    case.set("system/controlDict", "writeInterval", "0.2")
+    case.mesh()
+    case.run("setFields")
+    case.run("ldnaFoam")
 
-    welding_speed = dictionary_scalar(case, "system/caseParameters", "weldingSpeed")
-    last = time_directories(case)[-1]
-    alpha = read_internal_field(last / "alpha.metal")
-    velocity = read_internal_field(last / "U")
+    welding_speed = case.scalar("system/caseParameters", "weldingSpeed")
+    last = case.times[-1]
+    alpha = case.field("alpha.metal", last)
+    velocity = case.field("U", last)
     substrate = alpha > 0.99
     assert substrate.sum() > 0.3 * alpha.size
     error = np.abs(velocity[substrate] - np.array([welding_speed, 0, 0])).max() / welding_speed
@@ -56,9 +53,9 @@ def test_cold_substrate_moves_at_welding_speed(ldna_case: Path) -> None:
     print(f"largest gas speed {gas_speed:.3e} m/s")
     assert gas_speed < GAS_SPEED_LIMIT * welding_speed
 
-    inflow = read_function_object(case, "metalFlowIn", "surfaceFieldValue.dat")
-    outflow = read_function_object(case, "metalFlowOut", "surfaceFieldValue.dat")
-    to_atmosphere = read_function_object(case, "metalFlowAtmosphere", "surfaceFieldValue.dat")
+    inflow = case.function_object("metalFlowIn", "surfaceFieldValue.dat")
+    outflow = case.function_object("metalFlowOut", "surfaceFieldValue.dat")
+    to_atmosphere = case.function_object("metalFlowAtmosphere", "surfaceFieldValue.dat")
     q_in, q_out = -inflow[-1, 1], outflow[-1, 1]
     imbalance = abs(q_out - q_in) / q_in
     print(f"metal in {q_in:.6e} m3/s, out {q_out:.6e} m3/s, to atmosphere "
@@ -68,15 +65,15 @@ def test_cold_substrate_moves_at_welding_speed(ldna_case: Path) -> None:
     assert abs(to_atmosphere[-1, 1]) < FLOW_BALANCE_TOLERANCE * q_in
 
     # The inflow is the substrate cross-section at the welding speed
-    width = dictionary_scalar(case, "system/caseParameters", "width") * 1e-3
-    depth = dictionary_scalar(case, "system/caseParameters", "substrateDepth") * 1e-3
+    width = case.scalar("system/caseParameters", "width") * 1e-3
+    depth = case.scalar("system/caseParameters", "substrateDepth") * 1e-3
     assert abs(q_in - welding_speed * width * depth) < 1e-3 * q_in
 
     # The metal in the domain stays the same and bounded
-    balances = read_balances(case)
+    balances = case.balances()
     drift = abs(balances["metal_mass"][-1] - balances["metal_mass"][0]) / balances["metal_mass"][0]
     assert drift < 1e-4
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     assert low > -1e-6 and high < 1 + 1e-6
 
 
@@ -88,7 +85,7 @@ FILM_BOX = "(6e-3 -5e-3 0) (20e-3 5e-3 0.45e-3)"
 FILM_END_TIME = "0.02"
 
 
-def film_relaxation_time(case: Path, metal_fraction: float) -> float:
+def film_relaxation_time(case: Case, metal_fraction: float) -> float:
     """Time in which the porosity sink brings a cold film to the substrate's velocity.
 
     The sink C s^2/((1 - s)^3 + epsilon) (U_s - U) with the film's solid
@@ -96,15 +93,15 @@ def film_relaxation_time(case: Path, metal_fraction: float) -> float:
     metal fraction 0.2, 2 % at 0.01) is left out: tau = alpha rho_metal /
     sink coefficient.
     """
-    constant = dictionary_scalar(case, "constant/fvOptions", "enthalpyPorosity/mushyZoneConstant")
-    epsilon = dictionary_scalar(case, "constant/fvOptions", "enthalpyPorosity/porosityEpsilon")
-    rho_metal = dictionary_scalar(case, "constant/thermophysicalProperties",
-                                  "metal/referenceDensity")
+    constant = case.scalar("constant/fvOptions", "enthalpyPorosity/mushyZoneConstant")
+    epsilon = case.scalar("constant/fvOptions", "enthalpyPorosity/porosityEpsilon")
+    rho_metal = case.scalar("constant/thermophysicalProperties",
+                            "metal/referenceDensity")
     sink = constant * metal_fraction**2 / ((1 - metal_fraction)**3 + epsilon)
     return metal_fraction * rho_metal / sink
 
 
-def run_cold_film(case: Path, metal_fraction: float) -> dict[str, float]:
+def run_cold_film(case: Case, metal_fraction: float) -> dict[str, float]:
     """Run a cold film of ``metal_fraction``, at rest at first, on the moving substrate.
 
     Returns the largest relative error of its metal-weighted velocity, its
@@ -118,7 +115,7 @@ def run_cold_film(case: Path, metal_fraction: float) -> dict[str, float]:
     """
     keep_only_porosity(case)
     for entry in ("endTime", "writeInterval"):
-        set_entry(case / "system" / "controlDict", entry, FILM_END_TIME)
+        case.set("system/controlDict", entry, FILM_END_TIME)
     set_fields = case / "system" / "setFieldsDict"
     text = set_fields.read_text()
     film = f"""
@@ -133,22 +130,22 @@ def run_cold_film(case: Path, metal_fraction: float) -> dict[str, float]:
     }}
 );"""
     set_fields.write_text(text[:text.rindex(");")] + film + text[text.rindex(");") + 2:])
-    mesh_case(case)
-    run(case, "setFields")
-    run(case, "postProcess -func writeCellCentres -time 0", log_name="postProcess.C")
-    run(case, "postProcess -func writeCellVolumes -time 0", log_name="postProcess.V")
-    centres = read_internal_field(case / "0" / "C")
-    volumes = read_internal_field(case / "0" / "V")
-    alpha0 = read_internal_field(case / "0" / "alpha.metal")
+    case.mesh()
+    case.run("setFields")
+    case.run("postProcess -func writeCellCentres -time 0", log_name="postProcess.C")
+    case.run("postProcess -func writeCellVolumes -time 0", log_name="postProcess.V")
+    centres = case.field("C", "0")
+    volumes = case.field("V", "0")
+    alpha0 = case.field("alpha.metal", "0")
     above = centres[:, 2] > 0
     assert np.isclose(alpha0[above].max(), metal_fraction)
 
-    run(case, "ldnaFoam")
+    case.run("ldnaFoam")
 
-    welding_speed = dictionary_scalar(case, "system/caseParameters", "weldingSpeed")
-    last = time_directories(case)[-1]
-    alpha = read_internal_field(last / "alpha.metal")
-    velocity = read_internal_field(last / "U")
+    welding_speed = case.scalar("system/caseParameters", "weldingSpeed")
+    last = case.times[-1]
+    alpha = case.field("alpha.metal", last)
+    velocity = case.field("U", last)
     film = above & (alpha > 0.5 * metal_fraction)
     mean_velocity = (alpha[film, None] * velocity[film] * volumes[film, None]).sum(axis=0) \
         / (alpha[film] * volumes[film]).sum()
@@ -188,7 +185,7 @@ def run_cold_film(case: Path, metal_fraction: float) -> dict[str, float]:
     }
 
 
-def test_solid_film_moves_with_the_substrate(ldna_case: Path) -> None:
+def test_solid_film_moves_with_the_substrate(ldna_case: Case) -> None:
     """A cold film of metal fraction 0.2, at rest at first, on the moving substrate.
 
     The enthalpy-porosity sink acts on every cell that holds solid metal,
@@ -204,7 +201,7 @@ def test_solid_film_moves_with_the_substrate(ldna_case: Path) -> None:
     assert film["metal_out_of_layer"] < 1e-4
 
 
-def test_frozen_dust_travels_with_the_substrate(ldna_case: Path) -> None:
+def test_frozen_dust_travels_with_the_substrate(ldna_case: Case) -> None:
     """Frozen dust, metal fraction 0.01, at rest at first, on the moving substrate.
 
     A cell that is 99 % gas moves with its gas: the porosity sink of its

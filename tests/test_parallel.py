@@ -28,9 +28,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.foamcase import read_internal_field, run, run_parallel, time_directories
-from ldna.foamdict import keep_blocks, set_entry
-from ldna.meshing import mesh_case
+from ldna.case import Case
+from ldna.foamdict import keep_blocks
 
 #: Time of the comparison [s]
 END_TIME = "0.015"
@@ -43,14 +42,14 @@ SOLVER_TOLERANCE = "1e-13"
 FIELD_TOLERANCE = 1e-5
 
 
-def tighten_solvers(case: Path) -> None:
+def tighten_solvers(case: Case) -> None:
     """Converge every linear solver of the case to SOLVER_TOLERANCE."""
     fv_solution = "system/fvSolution"
-    run(case, f"foamDictionary -entry solvers/p_rgh/relTol -set 0 {fv_solution}",
-        log_name="foamDictionary.relTol")
+    case.run(f"foamDictionary -entry solvers/p_rgh/relTol -set 0 {fv_solution}",
+             log_name="foamDictionary.relTol")
     for solver in ("p_rgh", '"(U|T)"', '"alpha.metal.*"'):
-        run(case, f"foamDictionary -entry 'solvers/{solver}/tolerance' -set {SOLVER_TOLERANCE} "
-                  f"{fv_solution}", log_name="foamDictionary.tolerance")
+        case.run(f"foamDictionary -entry 'solvers/{solver}/tolerance' -set {SOLVER_TOLERANCE} "
+                 f"{fv_solution}", log_name="foamDictionary.tolerance")
 
 
 #: Effects of the template compared, besides the droplets
@@ -68,36 +67,36 @@ DROPLETS_DIFFER = (
     pytest.param(True, id="with_droplets",
                  marks=pytest.mark.xfail(strict=True, reason=DROPLETS_DIFFER)),
 ])
-def test_serial_and_parallel_runs_agree(ldna_case: Path, tmp_path: Path,
+def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
                                         with_droplets: bool) -> None:
     serial = ldna_case
     keep_blocks(serial / "constant" / "fvOptions",
                 EFFECTS + (["wireDroplets"] if with_droplets else []))
-    set_entry(serial / "system" / "controlDict", "endTime", END_TIME)
-    set_entry(serial / "system" / "controlDict", "writeInterval", END_TIME)
-    set_entry(serial / "system" / "controlDict", "writePrecision", "14")
+    serial.set("system/controlDict", "endTime", END_TIME)
+    serial.set("system/controlDict", "writeInterval", END_TIME)
+    serial.set("system/controlDict", "writePrecision", "14")
     tighten_solvers(serial)
-    mesh_case(serial)
-    run(serial, "setFields")
-    parallel = Path(shutil.copytree(serial, tmp_path / "parallel"))
+    serial.mesh()
+    serial.run("setFields")
+    parallel = Case(Path(shutil.copytree(serial, tmp_path / "parallel")))
 
-    run(serial, "ldnaFoam")
-    run(parallel, "decomposePar")
-    run_parallel(parallel, "ldnaFoam", 2)
-    run(parallel, "reconstructPar -latestTime")
+    serial.run("ldnaFoam")
+    parallel.run("decomposePar")
+    parallel.run("ldnaFoam", n_procs=2)
+    parallel.run("reconstructPar -latestTime")
 
-    end_serial, end_parallel = time_directories(serial)[-1], time_directories(parallel)[-1]
+    end_serial, end_parallel = serial.times[-1], parallel.times[-1]
     assert end_serial.name == end_parallel.name == END_TIME
-    alpha_serial = read_internal_field(end_serial / "alpha.metal")
-    alpha_parallel = read_internal_field(end_parallel / "alpha.metal")
+    alpha_serial = serial.field("alpha.metal", end_serial)
+    alpha_parallel = parallel.field("alpha.metal", end_parallel)
     metal = (alpha_serial >= 0.5) & (alpha_parallel >= 0.5)
     for field, where in (("alpha.metal", slice(None)), ("p_rgh", slice(None)),
                          ("T", metal), ("U", metal)):
-        a = read_internal_field(end_serial / field)[where]
-        b = read_internal_field(end_parallel / field)[where]
+        a = serial.field(field, end_serial)[where]
+        b = parallel.field(field, end_parallel)[where]
         scale = np.abs(a).max()
         difference = np.abs(a - b).max() / scale
         print(f"{field}: largest difference {difference:.2e} of its scale {scale:.6g}")
         assert difference < FIELD_TOLERANCE
     # The scene is not trivial: the laser has heated the metal
-    assert read_internal_field(end_serial / "T").max() > HEATED
+    assert serial.field("T", end_serial).max() > HEATED

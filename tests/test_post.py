@@ -18,13 +18,10 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.foamcase import (dictionary_scalar, read_internal_field, run, run_parallel,
-                           write_internal_field)
-from ldna.foamdict import set_entry
+from ldna.case import Case
 from ldna.post import (BeadMetrics, bead_not_yet_there, configured_bead_section,
                        function_object_metrics, post_process,
                        read_function_object_metrics, wetting_angle)
-from ldna.meshing import mesh_case
 
 #: Cell size of the synthetic case [m] (tests/cases/syntheticPool)
 CELL = 0.5e-3
@@ -87,14 +84,14 @@ def area_tolerance(semi_axis_1: float, semi_axis_2: float) -> float:
 
 
 @pytest.fixture
-def synthetic_pool_case(tmp_path: Path) -> Path:
+def synthetic_pool_case(tmp_path: Path) -> Case:
     """The synthetic case, meshed, with the prescribed fields at time 0."""
     case = prepare_test_case("syntheticPool", tmp_path, material_from_template=True)
-    run(case, "blockMesh")
-    run(case, "postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
-    temperature, alpha = prescribed_fields(read_internal_field(case / "0" / "C"))
-    write_internal_field(case / "0" / "T", temperature)
-    write_internal_field(case / "0" / "alpha.metal", alpha)
+    case.run("blockMesh")
+    case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+    temperature, alpha = prescribed_fields(case.field("C", "0"))
+    case.write_field("T", time="0", values=temperature)
+    case.write_field("alpha.metal", time="0", values=alpha)
     return case
 
 
@@ -132,7 +129,7 @@ def check_against_prescribed(result: BeadMetrics, label: str) -> None:
     assert true_area >= expected.fused_area - fused_tolerance
 
 
-def function_object_result(case: Path) -> BeadMetrics:
+def function_object_result(case: Case) -> BeadMetrics:
     """The last row of the case's meltPoolMetrics.dat."""
     row = read_function_object_metrics(case)[-1]
     return BeadMetrics(**dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, row[1:])))
@@ -147,16 +144,16 @@ def check_agreement(a: BeadMetrics, b: BeadMetrics) -> None:
         assert abs(value - other) <= AGREEMENT * max(abs(value), abs(other), 1e-12), name
 
 
-def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Path, tmp_path: Path) -> None:
+def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Case, tmp_path: Path) -> None:
     case = synthetic_pool_case
-    parallel = Path(shutil.copytree(case, tmp_path / "parallel"))
+    parallel = Case(Path(shutil.copytree(case, tmp_path / "parallel")))
 
-    run(case, "postProcess -fields '(T alpha.metal)' -time 0", log_name="postProcess")
+    case.run("postProcess -fields '(T alpha.metal)' -time 0", log_name="postProcess")
     serial_result = function_object_result(case)
     check_against_prescribed(serial_result, "function object, serial")
 
-    run(parallel, "decomposePar -time 0")
-    run_parallel(parallel, "postProcess -fields '(T alpha.metal)' -time 0", 2,
+    parallel.run("decomposePar -time 0")
+    parallel.run("postProcess -fields '(T alpha.metal)' -time 0", n_procs=2,
                  log_name="postProcess")
     parallel_result = function_object_result(parallel)
     check_against_prescribed(parallel_result, "function object, 2 ranks")
@@ -164,7 +161,7 @@ def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Path, tmp_path: Path)
     check_agreement(serial_result, parallel_result)
 
 
-def test_post_writes_pictures_headless(synthetic_pool_case: Path) -> None:
+def test_post_writes_pictures_headless(synthetic_pool_case: Case) -> None:
     case = synthetic_pool_case
     result, pictures, _ = post_process(case, time=0.0)
     assert [p.name for p in pictures] == ["surface.png", "transverse.png", "longitudinal.png"]
@@ -177,21 +174,20 @@ def test_post_writes_pictures_headless(synthetic_pool_case: Path) -> None:
     assert len(table) == 2 and table[0].startswith("time,pool_length")
 
 
-def test_function_object_and_post_agree_on_a_run(ldna_case: Path) -> None:
+def test_function_object_and_post_agree_on_a_run(ldna_case: Case) -> None:
     """The LDNA template, run briefly: metrics written in the run and read by post agree."""
     case = ldna_case
-    control = case / "system" / "controlDict"
     end_time = "0.03"
-    set_entry(control, "endTime", end_time)
-    set_entry(control, "writeInterval", end_time)
-    set_entry(control, "writePrecision", "12")
+    case.set("system/controlDict", "endTime", end_time)
+    case.set("system/controlDict", "writeInterval", end_time)
+    case.set("system/controlDict", "writePrecision", "12")
     # The bead section under the droplets: they have not reached the
     # template's section downstream yet
-    under_droplets = 1e-3 * dictionary_scalar(case, "system/caseParameters", "processPosition")
+    under_droplets = 1e-3 * case.scalar("system/caseParameters", "processPosition")
     for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1"),
                          ("beadSection", f"{under_droplets:g}")):
-        run(case, f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
-                  "system/controlDict", log_name="foamDictionary")
+        case.run(f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
+                 "system/controlDict", log_name="foamDictionary")
     # A liquid pool under the droplets from the start, so that every metric is exercised
     set_fields = case / "system" / "setFieldsDict"
     set_fields.write_text(set_fields.read_text().replace("regions\n(", f"""regions
@@ -201,9 +197,9 @@ def test_function_object_and_post_agree_on_a_run(ldna_case: Path) -> None:
         box {PRESET_POOL_BOX};
         fieldValues (volScalarFieldValue T {PRESET_POOL_TEMPERATURE});
     }}""", 1))
-    mesh_case(case)
-    run(case, "setFields")
-    run(case, "ldnaFoam")
+    case.mesh()
+    case.run("setFields")
+    case.run("ldnaFoam")
 
     written = function_object_result(case)
     computed = function_object_metrics(case, float(end_time),

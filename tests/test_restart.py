@@ -13,9 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ldna.foamcase import copy_case, read_internal_field, run
-from ldna.foamdict import set_entry
-from ldna.meshing import mesh_case
+from ldna.case import Case
 
 #: Where the interrupted run stops, and where both runs end [s]
 #: The first droplets are inserted at 9.7 ms, before the stop, the next ones
@@ -29,36 +27,35 @@ FIELD_TOLERANCE = 1e-9
 FIELDS = ("alpha.metal", "T", "U", "p_rgh")
 
 
-def prepare(case: Path) -> None:
+def prepare(case: Case) -> None:
     """Mesh and initialise the case; exact (17 digit) ASCII output every STOP_TIME."""
-    control = case / "system" / "controlDict"
-    set_entry(control, "writePrecision", "17")
-    set_entry(control, "writeInterval", STOP_TIME)
-    mesh_case(case)
-    run(case, "setFields")
+    case.set("system/controlDict", "writePrecision", "17")
+    case.set("system/controlDict", "writeInterval", STOP_TIME)
+    case.mesh()
+    case.run("setFields")
 
 
-def test_restart_equals_uninterrupted_run(ldna_case: Path, tmp_path: Path) -> None:
+def test_restart_equals_uninterrupted_run(ldna_case: Case, tmp_path: Path) -> None:
     straight = ldna_case
     prepare(straight)
-    interrupted = copy_case(straight, tmp_path / "interrupted")
-    # copy_case leaves out the mesh: mesh the copy the same way
-    mesh_case(interrupted)
-    run(interrupted, "setFields")
+    interrupted = Case.copy_of(straight, tmp_path / "interrupted")
+    # The copy leaves out the mesh: mesh the copy the same way
+    interrupted.mesh()
+    interrupted.run("setFields")
 
-    set_entry(straight / "system" / "controlDict", "endTime", END_TIME)
-    run(straight, "ldnaFoam")
+    straight.set("system/controlDict", "endTime", END_TIME)
+    straight.run("ldnaFoam")
 
-    set_entry(interrupted / "system" / "controlDict", "endTime", STOP_TIME)
-    run(interrupted, "ldnaFoam", log_name="ldnaFoam.first")
-    set_entry(interrupted / "system" / "controlDict", "endTime", END_TIME)
-    run(interrupted, "ldnaFoam", log_name="ldnaFoam.restart")
+    interrupted.set("system/controlDict", "endTime", STOP_TIME)
+    interrupted.run("ldnaFoam", log_name="ldnaFoam.first")
+    interrupted.set("system/controlDict", "endTime", END_TIME)
+    interrupted.run("ldnaFoam", log_name="ldnaFoam.restart")
     assert f"Create mesh for time = {STOP_TIME}" in \
         (interrupted / "log.ldnaFoam.restart").read_text(), "the second leg did not restart"
 
     for field in FIELDS:
-        a = read_internal_field(straight / END_TIME / field)
-        b = read_internal_field(interrupted / END_TIME / field)
+        a = straight.field(field, END_TIME)
+        b = interrupted.field(field, END_TIME)
         scale = np.abs(a).max()
         difference = np.abs(a - b).max() / scale
         print(f"{field}: largest difference {difference:.3e} of its scale {scale:.4g}")

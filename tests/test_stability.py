@@ -29,10 +29,9 @@ from pathlib import Path
 
 import pytest
 
+from ldna.case import Case
 from ldna.balance import metal_mass_balance, solver_health
-from ldna.foamcase import alpha_bounds, dictionary_scalar, read_balances, run, run_parallel
-from ldna.foamdict import read_scalars, set_block_entry, set_entry
-from ldna.meshing import mesh_case
+from ldna.foamdict import read_scalars, set_block_entry
 
 #: Metal fraction bounds: a bounded scheme keeps it within 1e-6 of [0, 1]
 ALPHA_LOW, ALPHA_HIGH = -1e-6, 1 + 1e-6
@@ -62,22 +61,21 @@ class HardCase:
     level: int = 0
 
 
-def parameters(case: Path) -> dict[str, float]:
+def parameters(case: Case) -> dict[str, float]:
     """The process knobs of a case."""
     return read_scalars(case / "system" / "caseParameters")
 
 
-def five_times_laser_power(case: Path) -> None:
+def five_times_laser_power(case: Case) -> None:
     """Five times the laser power, on a still beam, so that the surface boils."""
-    knobs = case / "system" / "caseParameters"
-    set_entry(knobs, "laserPower", f"{5 * parameters(case)['laserPower']:g}")
-    set_entry(knobs, "oscillationAmplitude", "0")
+    case.set("system/caseParameters", "laserPower", f"{5 * parameters(case)['laserPower']:g}")
+    case.set("system/caseParameters", "oscillationAmplitude", "0")
 
 
-def droplets_three_times_faster(case: Path) -> None:
+def droplets_three_times_faster(case: Case) -> None:
     """Droplets arrive at three times the template's speed."""
-    set_entry(case / "system" / "caseParameters", "dropletSpeed",
-              f"{3 * parameters(case)['dropletSpeed']:g}")
+    case.set("system/caseParameters", "dropletSpeed",
+             f"{3 * parameters(case)['dropletSpeed']:g}")
 
 
 #: Upper end of the temperature range on which ldnaFoam checks that sigma(T)
@@ -89,7 +87,7 @@ SIGMA_CHECK_TMAX = 3200.0
 IRON_SIGMA, IRON_SLOPE, IRON_MELTING = 1.943, -4.3e-4, 1809.0
 
 
-def ten_times_marangoni(case: Path) -> None:
+def ten_times_marangoni(case: Case) -> None:
     """dsigma/dT ten times pure iron's (the Marangoni stress scales with it).
 
     A linear sigma(T) with ten times iron's slope would turn negative at
@@ -98,13 +96,13 @@ def ten_times_marangoni(case: Path) -> None:
     7.3 N/m, so the capillary time step limit tightens too.
     """
     sigma_top = IRON_SIGMA + IRON_SLOPE * (SIGMA_CHECK_TMAX - IRON_MELTING)
-    run(case, "foamDictionary -entry sigma -set '{ type linear; "
-              f"sigma0 {sigma_top:.6g}; dSigmadT {10 * IRON_SLOPE:.6g}; "
-              f"Tref {SIGMA_CHECK_TMAX:g}; }}' constant/thermophysicalProperties",
-        log_name="foamDictionary.sigma")
+    case.run("foamDictionary -entry sigma -set '{ type linear; "
+             f"sigma0 {sigma_top:.6g}; dSigmadT {10 * IRON_SLOPE:.6g}; "
+             f"Tref {SIGMA_CHECK_TMAX:g}; }}' constant/thermophysicalProperties",
+             log_name="foamDictionary.sigma")
 
 
-def irregular_start(case: Path) -> None:
+def irregular_start(case: Case) -> None:
     """The irregular start (droplets of twice the diameter, 8x the mass) all run long."""
     set_block_entry(case / "constant" / "fvOptions", "wireDroplets",
                     "irregularityTime", f"{END_TIME:g}")
@@ -112,14 +110,13 @@ def irregular_start(case: Path) -> None:
                     "irregularDiameterFactor", "2")
 
 
-def courant_one(case: Path) -> None:
+def courant_one(case: Case) -> None:
     """Time steps up to a Courant number and an interface Courant number of 1."""
-    control = case / "system" / "controlDict"
-    set_entry(control, "maxCo", "1")
-    set_entry(control, "maxAlphaCo", "1")
+    case.set("system/controlDict", "maxCo", "1")
+    case.set("system/controlDict", "maxAlphaCo", "1")
 
 
-def coarsest_mesh(case: Path) -> None:
+def coarsest_mesh(case: Case) -> None:
     """The template as it is on its coarsest level (the fixture's level 0)."""
 
 
@@ -133,15 +130,15 @@ HARD_CASES = [
 ]
 
 
-def run_scene(case: Path, hard_case: HardCase) -> None:
+def run_scene(case: Case, hard_case: HardCase) -> None:
     """Mesh and run the changed template to the case's end time."""
-    set_entry(case / "system" / "caseParameters", "level", str(hard_case.level))
-    set_entry(case / "system" / "controlDict", "endTime", f"{hard_case.end_time:g}")
+    case.set("system/caseParameters", "level", str(hard_case.level))
+    case.set("system/controlDict", "endTime", f"{hard_case.end_time:g}")
     hard_case.change(case)
-    mesh_case(case)
-    run(case, "setFields")
-    run(case, "decomposePar")
-    run_parallel(case, "ldnaFoam", N_RANKS)
+    case.mesh()
+    case.run("setFields")
+    case.run("decomposePar")
+    case.run("ldnaFoam", n_procs=N_RANKS)
 
 
 #: Known failures, with what was measured (strict: a fix makes them fail
@@ -154,20 +151,20 @@ KNOWN_FAILURES: dict[str, str] = {}
                  marks=[pytest.mark.xfail(strict=True, reason=KNOWN_FAILURES[c.name])]
                  if c.name in KNOWN_FAILURES else [])
     for c in HARD_CASES])
-def test_hard_case_stays_stable(ldna_case: Path, hard_case: HardCase) -> None:
+def test_hard_case_stays_stable(ldna_case: Case, hard_case: HardCase) -> None:
     case = ldna_case
     run_scene(case, hard_case)
-    balances = read_balances(case)
+    balances = case.balances()
     # OpenFOAM ends a run when less than half a step is left
     last_step = balances["time"][-1] - balances["time"][-2]
     assert balances["time"][-1] >= hard_case.end_time - 0.5 * last_step, "run ended early"
 
-    low, high = alpha_bounds(case)
+    low, high = case.alpha_bounds()
     print(f"{hard_case.name}: alpha in [{low:.3e}, {1 - high:+.3e} from 1]")
     assert ALPHA_LOW <= low and high <= ALPHA_HIGH
 
     ambient = parameters(case)["ambientTemperature"]
-    boiling = dictionary_scalar(case, "constant/fvOptions", "evaporation/boilingTemperature")
+    boiling = case.scalar("constant/fvOptions", "evaporation/boilingTemperature")
     t_min, t_max = float(balances["T_min"].min()), float(balances["T_max"].max())
     print(f"T in [{t_min:.2f}, {t_max:.1f}] K (ambient {ambient:g}, boiling {boiling:g} K)")
     assert math.isfinite(t_min) and math.isfinite(t_max)

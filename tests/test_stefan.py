@@ -7,19 +7,18 @@ reading of the simulated one are in ``ldna.stefan`` (also used by
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import run
+from ldna.case import Case
 from ldna.stefan import NeumannSolution, front_position, neumann_lambda
 
 #: Allowed relative error of the front position (required: 3 %)
 FRONT_TOLERANCE = 0.03
 
 
-def test_melting_front_follows_neumann_solution(stefan_case: Path) -> None:
-    run(stefan_case, "ldnaFoam")
+def test_melting_front_follows_neumann_solution(stefan_case: Case) -> None:
+    stefan_case.run("ldnaFoam")
     exact_solution = NeumannSolution.from_case(stefan_case)
 
     for time in ("1", "2"):

@@ -15,8 +15,8 @@ import sys
 from pathlib import Path
 
 from conftest import TEMPLATE
-from ldna.foamdict import read_scalars
 from ldna.foamcase import run
+from ldna.foamdict import read_scalars
 
 #: Simulated time of each member [s]: the first droplets detach at 9.7 ms, so
 #: the run has some 100 steps and the function object writes its rows (every

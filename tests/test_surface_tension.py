@@ -9,14 +9,12 @@ gradient.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from ldna.foamcase import (dictionary_scalar, find_tables, read_internal_field, read_table, run,
-                           time_directories)
-from ldna.foamdict import set_entry
+from ldna.case import Case
+from ldna.foamcase import find_tables
 
 #: Allowed errors of the capillary checks
 LAPLACE_TOLERANCE = 0.02
@@ -28,41 +26,41 @@ REST_END_TIME = 0.05
 PROPERTIES = "constant/thermophysicalProperties"
 
 
-def cell_centres_2d(case: Path) -> tuple[np.ndarray, np.ndarray, float]:
+def cell_centres_2d(case: Case) -> tuple[np.ndarray, np.ndarray, float]:
     """x and z of the cell centres (OpenFOAM's writeCellCentres) and the cell size."""
-    run(case, "postProcess -func writeCellCentres -time 0")
-    centres = read_internal_field(case / "0" / "C")
+    case.run("postProcess -func writeCellCentres -time 0")
+    centres = case.field("C", "0")
     x, z = centres[:, 0], centres[:, 2]
     h = float(np.diff(np.unique(np.round(x, 12))).min())
     return x, z, h
 
 
-def run_cylinder(case: Path) -> tuple[float, float, float]:
+def run_cylinder(case: Case) -> tuple[float, float, float]:
     """Run the cylinder case: its pressure jump [Pa], sigma/R [Pa] and largest speed [m/s].
 
     The jump is between the pressure plateaus three cells away from the
     interface on either side.
     """
-    run(case, "ldnaFoam")
-    last = time_directories(case)[-1]
-    p = read_internal_field(last / "p_rgh")
-    velocity = read_internal_field(last / "U")
+    case.run("ldnaFoam")
+    last = case.times[-1]
+    p = case.field("p_rgh", last)
+    velocity = case.field("U", last)
     x, z, h = cell_centres_2d(case)
-    radius = dictionary_scalar(case, "system/setAlphaFieldDict", "radius")
-    origin = run(case, "foamDictionary -entry origin -value system/setAlphaFieldDict").output
+    radius = case.scalar("system/setAlphaFieldDict", "radius")
+    origin = case.run("foamDictionary -entry origin -value system/setAlphaFieldDict").output
     cx, _, cz = (float(v) for v in origin.strip().strip("()").split())
     r = np.hypot(x - cx, z - cz)
     jump = p[r < radius - 3 * h].mean() - p[r > radius + 3 * h].mean()
-    laplace = dictionary_scalar(case, PROPERTIES, "sigma") / radius
+    laplace = case.scalar(PROPERTIES, "sigma") / radius
     return jump, laplace, float(np.linalg.norm(velocity, axis=1).max())
 
 
-def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None:
+def test_static_drop_has_the_laplace_pressure(static_droplet_case: Case) -> None:
     """A liquid cylinder at rest: p_in - p_out = sigma/R, and hardly any flow."""
     case = static_droplet_case
     jump, laplace, largest_speed = run_cylinder(case)
-    sigma = dictionary_scalar(case, PROPERTIES, "sigma")
-    mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
+    sigma = case.scalar(PROPERTIES, "sigma")
+    mu = case.scalar(PROPERTIES, "metal/mu")
     print(f"pressure jump {jump:.2f} Pa, sigma/R = {laplace:.2f} Pa "
           f"({100 * (jump / laplace - 1):+.2f} %); largest speed {largest_speed:.4f} m/s, "
           f"limit {SPURIOUS_VELOCITY_SCALE * sigma / mu:.4f} m/s")
@@ -70,12 +68,12 @@ def test_static_drop_has_the_laplace_pressure(static_droplet_case: Path) -> None
     assert largest_speed < SPURIOUS_VELOCITY_SCALE * sigma / mu
 
 
-def test_capillary_force_is_zero_in_solid_metal(static_droplet_case: Path) -> None:
+def test_capillary_force_is_zero_in_solid_metal(static_droplet_case: Case) -> None:
     """The same cylinder, solid: no capillary force, so no pressure jump and no flow."""
     case = static_droplet_case
-    solidus = dictionary_scalar(case, PROPERTIES, "metal/solidus")
-    run(case, f"foamDictionary -entry internalField -set 'uniform {solidus - 300:g}' 0/T",
-        log_name="foamDictionary.T")
+    solidus = case.scalar(PROPERTIES, "metal/solidus")
+    case.run(f"foamDictionary -entry internalField -set 'uniform {solidus - 300:g}' 0/T",
+             log_name="foamDictionary.T")
     jump, laplace, largest_speed = run_cylinder(case)
     print(f"solid: pressure jump {jump:.3g} Pa (liquid: {laplace:.2f} Pa), "
           f"largest speed {largest_speed:.2e} m/s")
@@ -84,7 +82,7 @@ def test_capillary_force_is_zero_in_solid_metal(static_droplet_case: Path) -> No
 
 
 @pytest.mark.parametrize("d_sigma_d_t", [-4.3e-4, 4.3e-4])
-def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -> None:
+def test_marangoni_return_flow(marangoni_layer_case: Case, d_sigma_d_t: float) -> None:
     """Liquid layer of depth d under tau = dsigma/dT dT/dx: surface speed tau d/(4 mu).
 
     The hot wall is at x = 0: with d sigma/dT < 0 the surface flows to the
@@ -94,12 +92,12 @@ def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -
     evaluated at the surface.
     """
     case = marangoni_layer_case
-    run(case, f"foamDictionary -entry sigma/dSigmadT -set {d_sigma_d_t} {PROPERTIES}")
-    run(case, "ldnaFoam")
+    case.run(f"foamDictionary -entry sigma/dSigmadT -set {d_sigma_d_t} {PROPERTIES}")
+    case.run("ldnaFoam")
 
-    last = time_directories(case)[-1]
-    velocity = read_internal_field(last / "U")[:, 0]
-    alpha = read_internal_field(last / "alpha.metal")
+    last = case.times[-1]
+    velocity = case.field("U", last)[:, 0]
+    alpha = case.field("alpha.metal", last)
     x, z, h = cell_centres_2d(case)
     length = x.max() + h / 2
     column = np.isclose(x, length / 2 - h / 2) | np.isclose(x, length / 2 + h / 2)
@@ -109,9 +107,9 @@ def test_marangoni_return_flow(marangoni_layer_case: Path, d_sigma_d_t: float) -
     depth = (a * h).sum()
     liquid = heights < depth
 
-    hot = dictionary_scalar(case, "0/T", "boundaryField/hot/value")
-    cold = dictionary_scalar(case, "0/T", "boundaryField/cold/value")
-    mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
+    hot = case.scalar("0/T", "boundaryField/hot/value")
+    cold = case.scalar("0/T", "boundaryField/cold/value")
+    mu = case.scalar(PROPERTIES, "metal/mu")
     tau = d_sigma_d_t * (cold - hot) / length
     expected = tau * depth / (4 * mu)
 
@@ -140,33 +138,33 @@ AT_REST = [
 
 
 @pytest.mark.parametrize("hot,cold,speed_share,reason", AT_REST, ids=[r[3] for r in AT_REST])
-def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Path, hot: float, cold: float,
+def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Case, hot: float, cold: float,
                                        speed_share: float, reason: str) -> None:
     """No Marangoni stress, no flow: a flat surface stays at rest (balanced force).
 
     The logged Marangoni force vanishes (to round-off) in every step.
     """
     case = marangoni_layer_case
-    set_entry(case / "0" / "T", "internalField", f"uniform {0.5 * (hot + cold)}")
-    run(case, f"foamDictionary -entry boundaryField/hot/value -set 'uniform {hot}' 0/T")
-    run(case, f"foamDictionary -entry boundaryField/cold/value -set 'uniform {cold}' 0/T")
-    set_entry(case / "system" / "controlDict", "endTime", f"{REST_END_TIME:g}")
-    set_entry(case / "system" / "controlDict", "writeInterval", f"{REST_END_TIME:g}")
-    run(case, "ldnaFoam")
+    case.set("0/T", "internalField", f"uniform {0.5 * (hot + cold)}")
+    case.run(f"foamDictionary -entry boundaryField/hot/value -set 'uniform {hot}' 0/T")
+    case.run(f"foamDictionary -entry boundaryField/cold/value -set 'uniform {cold}' 0/T")
+    case.set("system/controlDict", "endTime", f"{REST_END_TIME:g}")
+    case.set("system/controlDict", "writeInterval", f"{REST_END_TIME:g}")
+    case.run("ldnaFoam")
 
-    last = time_directories(case)[-1]
+    last = case.times[-1]
     # In the metal: the gas between the walls of different temperature may
     # move by its own expansion
-    metal = read_internal_field(last / "alpha.metal") > 0.5
-    speed = np.linalg.norm(read_internal_field(last / "U")[metal], axis=1).max()
+    metal = case.field("alpha.metal", last) > 0.5
+    speed = np.linalg.norm(case.field("U", last)[metal], axis=1).max()
     # The return-flow speed the same layer reaches under 100 K of difference
     x, _, h = cell_centres_2d(case)
     length = x.max() + h / 2
-    depth = read_internal_field(last / "alpha.metal").sum() * h * h / length
-    mu = dictionary_scalar(case, PROPERTIES, "metal/mu")
-    d_sigma_d_t = dictionary_scalar(case, PROPERTIES, "sigma/dSigmadT")
+    depth = case.field("alpha.metal", last).sum() * h * h / length
+    mu = case.scalar(PROPERTIES, "metal/mu")
+    d_sigma_d_t = case.scalar(PROPERTIES, "sigma/dSigmadT")
     driven = abs(d_sigma_d_t) * 100.0 / length * depth / (4 * mu)
-    table = read_table(case, find_tables(case, "force")[0], "force")
+    table = case.table(find_tables(case, "force")[0], "force")
     largest_force = np.abs(np.column_stack(
         [table[axis] for axis in ("force_x", "force_y", "force_z")])).max()
     print(f"{reason}: largest Marangoni force {largest_force:.3e} N, largest metal speed "

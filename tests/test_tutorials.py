@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import PROJECT_DIR, alpha_bounds, read_balances, run
+from ldna.case import Case
+from ldna.foamcase import PROJECT_DIR
 from userpath import run_as_user
 
 pytestmark = pytest.mark.user_path
@@ -55,12 +56,12 @@ def shorten(tutorial: Path, steps: int) -> None:
             if not (tutorial / "system" / name).exists():
                 shutil.copy(PROJECT_DIR / "cases" / "ldna" / "system" / name,
                             tutorial / "system" / name)
-    delta_t = float(run(tutorial, "foamDictionary -entry deltaT -value system/controlDict",
-                        log_name="foamDictionary.deltaT").output.split()[-1])
+    case = Case(tutorial)
+    delta_t = case.scalar("system/controlDict", "deltaT")
     end_time = f"{steps * delta_t:g}"
     for entry in ("endTime", "writeInterval"):
-        run(tutorial, f"foamDictionary -entry {entry} -set {end_time} system/controlDict",
-            log_name=f"foamDictionary.{entry}")
+        case.run(f"foamDictionary -entry {entry} -set {end_time} system/controlDict",
+                 log_name=f"foamDictionary.{entry}")
 
 
 def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:
@@ -78,10 +79,11 @@ def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:
     solver_log = solver_logs[0]
     text = solver_log.read_text()
     assert text.rstrip().endswith("Finalising parallel run") or "\nEnd\n" in text
-    balances = read_balances(solver_log.parent)
+    run_dir = Case(solver_log.parent)
+    balances = run_dir.balances()
     assert len(balances) > 1
     assert balances["T_min"].min() > 0
-    low, high = alpha_bounds(solver_log.parent)
+    low, high = run_dir.alpha_bounds()
     assert low > -1e-6 and high < 1 + 1e-6
 
 

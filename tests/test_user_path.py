@@ -19,7 +19,8 @@ from pathlib import Path
 
 import pytest
 
-from ldna.foamcase import PROJECT_DIR, dictionary_scalar, read_balances, time_directories
+from ldna.case import Case
+from ldna.foamcase import PROJECT_DIR
 from userpath import SHELLS, run_as_user, user_command
 
 pytestmark = pytest.mark.user_path
@@ -34,7 +35,7 @@ BUILD_PRODUCTS = ["build/bin/ldnaFoam", "build/lib/libldnaMixture.so",
                   "build/venv/.ldna-ready", "build/openfoam-env.sh"]
 
 
-def scene_command(case: Path, end_time: float = END_TIME) -> str:
+def scene_command(case: Case, end_time: float = END_TIME) -> str:
     """The README's main command with a short end time, on 2 ranks, into ``case``."""
     return f"bin/ldna-scene --level 0 --end-time {end_time} --np 2 --dir {case}"
 
@@ -43,20 +44,20 @@ def build_stamps() -> dict[str, int]:
     return {path: (PROJECT_DIR / path).stat().st_mtime_ns for path in BUILD_PRODUCTS}
 
 
-def last_reconstructed_time(case: Path) -> float:
-    times = [t for t in time_directories(case) if float(t.name) > 0 and (t / "T").exists()]
+def last_reconstructed_time(case: Case) -> float:
+    times = [t for t in case.times if float(t.name) > 0 and (t / "T").exists()]
     assert times, f"no reconstructed time directory in {case}"
     return float(times[-1].name)
 
 
-def last_solved_time(case: Path) -> float:
+def last_solved_time(case: Case) -> float:
     """The time of the solver's last step, from its balance table."""
-    return float(read_balances(case)["time"][-1])
+    return float(case.balances()["time"][-1])
 
 
 @pytest.mark.parametrize("shell", list(SHELLS))
 def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
-    case = tmp_path / "scene"
+    case = Case(tmp_path / "scene")
     before = build_stamps()
 
     scene = run_as_user(scene_command(case), shell=shell)
@@ -87,8 +88,8 @@ def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
     assert figures["expected_bead_area_mm2"] > 0
     # The bead's start travels from the wires' midpoint with the substrate
     parameters = "system/caseParameters"
-    travel_mm = figures["bead_section_mm"] - dictionary_scalar(case, parameters, "processPosition")
-    speed_mm_s = 1e3 * dictionary_scalar(case, parameters, "weldingSpeed")
+    travel_mm = figures["bead_section_mm"] - case.scalar(parameters, "processPosition")
+    speed_mm_s = 1e3 * case.scalar(parameters, "weldingSpeed")
     assert figures["bead_arrival_s"] == pytest.approx(travel_mm / speed_mm_s, rel=1e-6)
 
 
@@ -109,7 +110,7 @@ def _kill_solver_in(directory: Path) -> int:
 
 
 def test_failed_scene_does_not_block_the_next_attempt(tmp_path: Path) -> None:
-    case = tmp_path / "scene"
+    case = Case(tmp_path / "scene")
     command = scene_command(case, end_time=1.0)
     scene = subprocess.Popen(user_command(command), cwd=PROJECT_DIR,
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
@@ -120,7 +121,7 @@ def test_failed_scene_does_not_block_the_next_attempt(tmp_path: Path) -> None:
         assert scene.poll() is None, scene.communicate()[0][-3000:]
         assert time.monotonic() < deadline, "the solver did not start"
         time.sleep(0.5)
-    assert _kill_solver_in(case) > 0
+    assert _kill_solver_in(case.path) > 0
     output = scene.communicate(timeout=300)[0]
 
     assert scene.returncode != 0

@@ -30,9 +30,8 @@ import numpy as np
 
 from . import meshing
 from .case import Case
-from .foamcase import (BALANCES, cpu_seconds, dictionary_scalar, read_balances, run,
-                       time_directories)
-from .foamdict import read_scalars, set_entry
+from .foamcase import BALANCES
+from .foamdict import read_scalars
 from .stefan import NeumannSolution, front_position
 
 
@@ -44,16 +43,16 @@ class Scene(Protocol):
     outputs_meta: dict[str, tuple[str, str, float]]
     default_levels: tuple[float, ...]
 
-    def set_resolution(self, case: Path, level: float) -> float:
+    def set_resolution(self, case: Case, level: float) -> float:
         """Mesh ``case`` at ``level``; return the finest cell size [mm]."""
 
-    def prepare(self, case: Path) -> None:
+    def prepare(self, case: Case) -> None:
         """Make the mesh and initial fields."""
 
-    def outputs(self, case: Path) -> dict[str, float]:
+    def outputs(self, case: Case) -> dict[str, float]:
         """Key outputs of a finished run, in SI units."""
 
-    def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
+    def exact(self, case: Case, end_time: float) -> dict[str, float] | None:
         """Analytical outputs at ``end_time``, or None (compare with the finest run)."""
 
 
@@ -74,29 +73,29 @@ class LdnaScene:
     #: Process-zone cells of 0.45, 0.32 and 0.225 mm (level 1 resolves droplets)
     default_levels = (0.0, 0.5, 1.0)
 
-    def set_resolution(self, case: Path, level: float) -> float:
+    def set_resolution(self, case: Case, level: float) -> float:
         meshing.set_level(case, level)
         # The metrics at the end time only: at write times, and the end is one
         for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
-            run(case, f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
-                      "system/controlDict", log_name="foamDictionary")
+            case.run(f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
+                     "system/controlDict", log_name="foamDictionary")
         return meshing.process_cell_size(level)
 
-    def prepare(self, case: Path) -> None:
-        meshing.mesh_case(case)
-        run(case, "setFields")
+    def prepare(self, case: Case) -> None:
+        case.mesh()
+        case.run("setFields")
 
-    def outputs(self, case: Path) -> dict[str, float]:
+    def outputs(self, case: Case) -> dict[str, float]:
         from .post import BeadMetrics, read_function_object_metrics
 
         last = dict(zip(("time",) + BeadMetrics.FUNCTION_OBJECT_COLUMNS,
                         read_function_object_metrics(case)[-1]))
         values = {name: float(last[name]) for name in self.outputs_meta if name in last}
-        values["metal_mass"] = float(read_balances(case)["metal_mass"][-1])
+        values["metal_mass"] = float(case.balances()["metal_mass"][-1])
         values["droplet_fraction"] = largest_fraction_in_flight(case)
         return values
 
-    def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
+    def exact(self, case: Case, end_time: float) -> dict[str, float] | None:
         return None
 
 
@@ -112,7 +111,7 @@ def largest_fraction_in_flight(case: Path) -> float:
 
     grid = read_case(case)
     z = np.asarray(grid.cell_centers().points)[:, 2]
-    wire_height = 1e-3 * dictionary_scalar(case, "system/caseParameters", "wireHeight")
+    wire_height = 1e-3 * Case(case).scalar("system/caseParameters", "wireHeight")
     in_flight = (z > 0.1 * wire_height) & (z < 0.9 * wire_height)
     alpha = np.asarray(grid.cell_data["alpha.metal"])[in_flight]
     return float(alpha.max()) if alpha.size else math.nan
@@ -130,22 +129,20 @@ class StefanScene:
     level0_cells = 25
     level0_delta_t = 16e-3
 
-    def set_resolution(self, case: Path, level: float) -> float:
-        parameters = case / "system" / "caseParameters"
+    def set_resolution(self, case: Case, level: float) -> float:
         cells = round(self.level0_cells * 2**level)
-        set_entry(parameters, "cellsAlongBar", str(cells))
-        set_entry(parameters, "deltaT", f"{self.level0_delta_t / 2**level:.9g}")
-        return read_scalars(parameters)["barLength"] / cells
+        case.set("system/caseParameters", "cellsAlongBar", str(cells))
+        case.set("system/caseParameters", "deltaT", f"{self.level0_delta_t / 2**level:.9g}")
+        return case.scalar("system/caseParameters", "barLength") / cells
 
-    def prepare(self, case: Path) -> None:
-        run(case, "blockMesh")
+    def prepare(self, case: Case) -> None:
+        case.run("blockMesh")
 
-    def outputs(self, case: Path) -> dict[str, float]:
-        last = time_directories(case)[-1].name
-        return {"front": front_position(case, last)}
+    def outputs(self, case: Case) -> dict[str, float]:
+        return {"front": front_position(case.path, case.times[-1].name)}
 
-    def exact(self, case: Path, end_time: float) -> dict[str, float] | None:
-        return {"front": NeumannSolution.from_case(case).front(end_time)}
+    def exact(self, case: Case, end_time: float) -> dict[str, float] | None:
+        return {"front": NeumannSolution.from_case(case.path).front(end_time)}
 
 
 SCENES: dict[str, Scene] = {"ldna": LdnaScene(), "stefan": StefanScene()}
@@ -204,7 +201,7 @@ class StartState:
 
     def __post_init__(self) -> None:
         if not any(abs(t - self.time) <= 1e-9 * max(1.0, self.time)
-                   for t in (float(d.name) for d in time_directories(self.case))):
+                   for t in (float(d.name) for d in Case(self.case).times)):
             raise ValueError(f"{self.case}: no reconstructed time {self.time:g} to start from")
 
     def map_onto(self, case: Case) -> None:
@@ -228,7 +225,7 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if directory.exists():
         shutil.rmtree(directory)
     case = Case.copy_of(template, directory)
-    member.cell_size_mm = scene.set_resolution(case.path, member.level)
+    member.cell_size_mm = scene.set_resolution(case, member.level)
     control = "system/controlDict"
     if end_time is not None:
         case.set(control, "endTime", f"{end_time:g}")
@@ -242,7 +239,7 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if member.max_co is not None:
         case.set(control, "maxCo", f"{member.max_co:g}")
         case.set(control, "maxAlphaCo", f"{member.max_co:g}")
-    scene.prepare(case.path)
+    scene.prepare(case)
     if start:
         start.map_onto(case)
     member.cells = case.cells
@@ -254,14 +251,14 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     case.run("ldnaFoam", n_procs)
     member.wall_time = time.perf_counter() - began
     try:
-        member.cpu_time = cpu_seconds(case.path)
+        member.cpu_time = case.cpu_seconds()
     except FileNotFoundError:
         member.cpu_time = None
     if n_procs > 1:
         case.reconstruct()
     # Rows of the run's balance table: the initial state and one per step
     member.steps = len(case.latest_table(*BALANCES)) - 1
-    member.outputs = scene.outputs(case.path)
+    member.outputs = scene.outputs(case)
     return member
 
 

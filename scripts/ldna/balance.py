@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .foamcase import find_tables, read_balances, read_function_object, read_table
+from .case import Case
 from .material import Metal
 
 #: The template's function objects of metal volume flow through its patches
@@ -62,34 +62,36 @@ class MassBalance:
 WIRE_COLUMNS = ("addedMass", "onTime", "dutyFraction")
 
 
-def wire_table(case: Path) -> dict[str, np.ndarray]:
+def wire_table(case: Case | Path) -> dict[str, np.ndarray]:
     """Per wire of every droplet source, per step: metal added [kg] and time
     switched on [s] since the start of the run, and the duty fraction, from
     the sources' tables (postProcessing/<source>/<startTime>/droplets.dat)."""
+    case = Case(case)
     wires: dict[str, np.ndarray] = {}
-    for source in find_tables(case, "droplets"):
-        table = read_table(case, source, "droplets")
+    for source in case.tables_named("droplets"):
+        table = case.table(source, "droplets")
         names = [column.rsplit("_", 1)[0] for column in table.dtype.names[1::len(WIRE_COLUMNS)]]
         for wire in names:
             wires[wire] = np.column_stack([table[f"{wire}_{column}"] for column in WIRE_COLUMNS])
     return wires
 
 
-def evaporation_table(case: Path) -> np.ndarray | None:
+def evaporation_table(case: Case | Path) -> np.ndarray | None:
     """Evaporation's rows per step (``massRate`` [kg/s], ``evaporatedMass`` [kg]
     since the start of the run, ``latentHeat`` and ``heatSink`` [W],
     ``recoilForce_x/y/z`` [N]), or None without an evaporation source."""
-    sources = find_tables(case, "evaporation")
+    case = Case(case)
+    sources = case.tables_named("evaporation")
     if len(sources) > 1:
         raise ValueError(f"{case}: more than one evaporation source: {sources}")
-    return read_table(case, sources[0], "evaporation") if sources else None
+    return case.table(sources[0], "evaporation") if sources else None
 
 
-def metal_mass_balance(case: Path) -> MassBalance:
+def metal_mass_balance(case: Case | Path) -> MassBalance:
     """Mass budget of the run of ``case``, from its tables."""
-    case = Path(case)
-    balances = read_balances(case)
-    metal = Metal.from_case(case)
+    case = Case(case)
+    balances = case.balances()
+    metal = Metal.from_case(case.path)
     if metal.density_model != "Boussinesq":
         raise ValueError(f"{case}: the flow balance needs the Boussinesq metal "
                          f"(constant mass density), not {metal.density_model}")
@@ -111,23 +113,23 @@ def metal_mass_balance(case: Path) -> MassBalance:
     )
 
 
-def step_flows(case: Path, name: str, run_start: float) -> tuple[np.ndarray, np.ndarray]:
+def step_flows(case: Case | Path, name: str, run_start: float) -> tuple[np.ndarray, np.ndarray]:
     """Times [s] and metal volumes [m3] out (negative: in) per step of the
     patch flow function object ``name``: each row is the flow of the step
     that ended at its time, the first step starting at ``run_start``."""
-    rows = read_function_object(case, name, "surfaceFieldValue.dat")
+    rows = Case(case).function_object(name, "surfaceFieldValue.dat")
     if rows.size == 0:
         return np.empty(0), np.empty(0)
     times = rows[:, 0]
     return times, rows[:, 1] * np.diff(np.concatenate(([run_start], times)))
 
 
-def patch_flows(case: Path, start: float = -np.inf, end: float = np.inf) -> dict[str, float]:
+def patch_flows(case: Case | Path, start: float = -np.inf, end: float = np.inf) -> dict[str, float]:
     """Metal volume [m3] that left through each of the template's patch flow
     function objects (``metalFlowIn``, ...; negative: entered) between
     ``start`` and ``end`` [s]."""
-    case = Path(case)
-    run_start = float(read_balances(case)["time"][0])
+    case = Case(case)
+    run_start = float(case.balances()["time"][0])
     volumes = {}
     for name in FLOW_FUNCTION_OBJECTS:
         times, volume = step_flows(case, name, run_start)
@@ -154,10 +156,10 @@ class SolverHealth:
         return (not self.all_finite) or self.max_iterations >= max_iter
 
 
-def solver_health(case: Path) -> SolverHealth:
+def solver_health(case: Case | Path) -> SolverHealth:
     """Iterations and residuals of every linear solve and energy iteration of
     a run, from the solver's balance table."""
-    balances = read_balances(case)[1:]
+    balances = Case(case).balances()[1:]
     if balances["linear_solves"].sum() == 0:
         raise ValueError(f"{case}: no linear solves recorded")
     return SolverHealth(

@@ -28,6 +28,10 @@ class Case:
 
     path: Path
 
+    def __post_init__(self) -> None:
+        # A Case of a Case or of a str is a Case of its path
+        object.__setattr__(self, "path", Path(self.path))
+
     @classmethod
     def copy_of(cls, template: Path | "Case", destination: Path) -> "Case":
         """A copy of a case template, without the results of earlier runs."""
@@ -36,6 +40,17 @@ class Case:
 
     def __truediv__(self, relative: str) -> Path:
         return self.path / relative
+
+    def __fspath__(self) -> str:
+        return str(self.path)
+
+    def __str__(self) -> str:
+        return str(self.path)
+
+    @property
+    def name(self) -> str:
+        """The case directory's name."""
+        return self.path.name
 
     # Dictionaries
 
@@ -101,10 +116,15 @@ class Case:
         """Time directories, sorted by time."""
         return foamcase.time_directories(self.path)
 
-    def field(self, name: str, time: str | None = None) -> np.ndarray:
-        """Cell values of a field at ``time`` (default: the latest)."""
-        directory = self.path / time if time is not None else self.times[-1]
+    def field(self, name: str, time: str | Path | None = None) -> np.ndarray:
+        """Cell values of a field at ``time`` (a time name or time directory;
+        default: the latest)."""
+        directory = self.times[-1] if time is None else self.path / Path(time).name
         return foamcase.read_internal_field(directory / name)
+
+    def write_field(self, name: str, values: np.ndarray, time: str = "0") -> None:
+        """Replace the cell values of a field file, keeping its boundary conditions."""
+        foamcase.write_internal_field(self.path / time / name, values)
 
     def table(self, name: str, file: str) -> np.ndarray:
         """A function object's table over all runs (``postProcessing/<name>``)."""
@@ -114,9 +134,27 @@ class Case:
         """A function object's table of the latest run only."""
         return foamcase.latest_run_table(self.path, name, file)
 
+    def function_object(self, name: str, file: str) -> np.ndarray:
+        """Numeric rows (time first) of a function object's table, no rows
+        when it wrote none."""
+        return foamcase.read_function_object(self.path, name, file)
+
+    def tables_named(self, file: str) -> list[str]:
+        """The postProcessing folders holding a ``<file>.dat`` table (the
+        sources of one kind: ``droplets``, ``evaporation``, ...)."""
+        return foamcase.find_tables(self.path, file)
+
+    def cpu_seconds(self) -> float:
+        """CPU time of the master rank [s] of all runs (timeInfo)."""
+        return foamcase.cpu_seconds(self.path)
+
     def balances(self) -> np.ndarray:
         """The solver's domain totals and health, one row per step."""
         return foamcase.read_balances(self.path)
+
+    def alpha_bounds(self) -> tuple[float, float]:
+        """Lowest and highest metal fraction of any step of the runs."""
+        return foamcase.alpha_bounds(self.path)
 
     def seconds_per_step(self) -> float:
         """Mean CPU time per step of the latest run (timeInfo), without the

@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .case import Case
 from .material import Metal
 
 #: Metal fraction from which a cell counts as metal (meltPoolMetrics default)
@@ -69,13 +70,13 @@ class BeadMetrics:
         return asdict(self)
 
 
-def fusion_temperature(case: Path) -> float:
+def fusion_temperature(case: Case | Path) -> float:
     """(solidus + liquidus)/2 of the case's metal [K] (meltPoolMetrics' default)."""
     metal = Metal.from_case(Path(case))
     return 0.5 * (metal.solidus + metal.liquidus)
 
 
-def read_case(case: Path, time: float | None = None):
+def read_case(case: Case | Path, time: float | None = None):
     """The internal mesh of ``case`` at ``time`` (default: latest) as a pyvista grid.
 
     Cell data holds the fields, point data their interpolation (for contours).
@@ -151,29 +152,25 @@ def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
 POST_FUNCTION = "postMeltPoolMetrics"
 
 
-def _time_name(case: Path, time: float) -> tuple[str, int]:
+def _time_name(case: Case, time: float) -> tuple[str, int]:
     """The written time directory nearest ``time`` and the ranks to read it
     with (1: reconstructed; else the processor directories)."""
-    from .foamcase import time_directories
-
-    processors = sorted(case.glob("processor[0-9]*"))
-    reconstructed = [t for t in time_directories(case) if (t / "alpha.metal").exists()]
-    directories = reconstructed or (time_directories(processors[0]) if processors else [])
+    processors = sorted(case.path.glob("processor[0-9]*"))
+    reconstructed = [t for t in case.times if (t / "alpha.metal").exists()]
+    directories = reconstructed or (Case(processors[0]).times if processors else [])
     if not directories:
         raise FileNotFoundError(f"no written time in {case}")
     nearest = min(directories, key=lambda t: abs(float(t.name) - time))
     return nearest.name, 1 if reconstructed else len(processors)
 
 
-def function_object_metrics(case: Path, time: float, surface_height: float = 0.0,
+def function_object_metrics(case: Case | Path, time: float, surface_height: float = 0.0,
                             bead_section: float | None = None,
                             fusion_temperature_: float | None = None) -> BeadMetrics:
     """The meltPoolMetrics function object's metrics of ``case`` at the written
     time nearest ``time``, run there with OpenFOAM's postProcess (in
     parallel on a case that is only decomposed)."""
-    from .foamcase import run, run_parallel
-
-    case = Path(case)
+    case = Case(case)
     time_name, n_procs = _time_name(case, time)
     entries = {"surfaceHeight": f"{surface_height:.12g}"}
     if bead_section is not None:
@@ -202,10 +199,7 @@ functions
     shutil.rmtree(case / "postProcessing" / POST_FUNCTION / time_name, ignore_errors=True)
     command = (f"postProcess -dict system/{POST_FUNCTION} -fields '(T alpha.metal)' "
                f"-time {time_name}")
-    if n_procs > 1:
-        run_parallel(case, command, n_procs, log_name=POST_FUNCTION)
-    else:
-        run(case, command, log_name=POST_FUNCTION)
+    case.run(command, n_procs=n_procs, log_name=POST_FUNCTION)
     # This time's row only: earlier calls left the rows of other times
     table = case / "postProcessing" / POST_FUNCTION / time_name / "meltPoolMetrics.dat"
     row = np.loadtxt(table, comments="#", ndmin=2)[-1]
@@ -234,35 +228,31 @@ def wetting_angle(y: np.ndarray, metal_height: np.ndarray, toe_left: float,
     return float(np.mean(angles)) if angles else 90.0
 
 
-def expected_bead_area(case: Path) -> float:
+def expected_bead_area(case: Case | Path) -> float:
     """The steady bead's section [m2]: wire mass rate / (metal density x welding speed).
 
     The mass balance no model escapes: what the wires feed leaves in the bead.
     Read from the case's dropletSource (wires' density, feed speed and radius),
     enthalpy-porosity welding speed and the metal's reference density.
     """
-    from .foamcase import dictionary_scalar, dictionary_value
-
-    case = Path(case)
+    case = Case(case)
     source = "constant/fvOptions"
-    wires = re.findall(r"^\s*(\w+)\s*$", dictionary_value(case, source, "wireDroplets/wires"), re.M)
-    common_density = dictionary_scalar(case, source, "wireDroplets/wireDensity")
+    wires = re.findall(r"^\s*(\w+)\s*$", case.value(source, "wireDroplets/wires"), re.M)
+    common_density = case.scalar(source, "wireDroplets/wireDensity")
     mass_rate = 0.0
     for wire in wires:
         key = f"wireDroplets/wires/{wire}"
-        mass_rate += (common_density * dictionary_scalar(case, source, f"{key}/feedSpeed")
-                      * np.pi * dictionary_scalar(case, source, f"{key}/wireRadius") ** 2)
+        mass_rate += (common_density * case.scalar(source, f"{key}/feedSpeed")
+                      * np.pi * case.scalar(source, f"{key}/wireRadius") ** 2)
     return mass_rate / (Metal.from_case(case).reference_density * welding_speed(case))
 
 
-def welding_speed(case: Path) -> float:
+def welding_speed(case: Case | Path) -> float:
     """The substrate's speed [m/s] (the enthalpy-porosity source's ``weldingSpeed``)."""
-    from .foamcase import dictionary_scalar
-
-    return dictionary_scalar(case, "constant/fvOptions", "enthalpyPorosity/weldingSpeed")
+    return Case(case).scalar("constant/fvOptions", "enthalpyPorosity/weldingSpeed")
 
 
-def bead_arrival_time(case: Path, section: float) -> float | None:
+def bead_arrival_time(case: Case | Path, section: float) -> float | None:
     """When the start of the bead reaches the transverse section at x = ``section`` [s].
 
     Deposition starts under the wires at t = 0 and the deposit travels with
@@ -272,18 +262,16 @@ def bead_arrival_time(case: Path, section: float) -> float | None:
     case without wires or without a moving substrate.
     """
     try:
-        return _bead_arrival_time(Path(case), section)
+        return _bead_arrival_time(Case(case), section)
     except KeyError:
         return None
 
 
-def _bead_arrival_time(case: Path, section: float) -> float:
-    from .foamcase import dictionary_scalar, dictionary_value
-
+def _bead_arrival_time(case: Case, section: float) -> float:
     source = "constant/fvOptions"
-    first_wire_x = float(dictionary_value(case, source, "wireDroplets/position").strip("()").split()[0])
-    wires = re.findall(r"^\s*(\w+)\s*$", dictionary_value(case, source, "wireDroplets/wires"), re.M)
-    spacing = dictionary_scalar(case, source, "wireDroplets/wireSpacing")
+    first_wire_x = float(case.value(source, "wireDroplets/position").strip("()").split()[0])
+    wires = re.findall(r"^\s*(\w+)\s*$", case.value(source, "wireDroplets/wires"), re.M)
+    spacing = case.scalar(source, "wireDroplets/wireSpacing")
     midpoint = first_wire_x + 0.5 * (len(wires) - 1) * spacing
     return (section - midpoint) / welding_speed(case)
 
@@ -299,17 +287,15 @@ def bead_not_yet_there(arrival: float | None, time: float, section: float) -> st
             "in system/controlDict).")
 
 
-def configured_bead_section(case: Path, name: str = "meltPoolMetrics") -> float | None:
+def configured_bead_section(case: Case | Path, name: str = "meltPoolMetrics") -> float | None:
     """The bead section [m] of the case's meltPoolMetrics function object ``name``, if any."""
-    from .foamcase import dictionary_scalar
-
     try:
-        return dictionary_scalar(case, "system/controlDict", f"functions/{name}/beadSection")
+        return Case(case).scalar("system/controlDict", f"functions/{name}/beadSection")
     except KeyError:
         return None
 
 
-def summary(case: Path, result: BeadMetrics, time: float) -> dict[str, float]:
+def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, float]:
     """The figures a welding engineer compares, in mm, mm2, K and degrees (``--json``)."""
     return {
         "time_s": time,
@@ -398,7 +384,7 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
     return path
 
 
-def post_process(case: Path, output: Path | None = None, time: float | None = None,
+def post_process(case: Case | Path, output: Path | None = None, time: float | None = None,
                  surface_height: float = 0.0, bead_section: float | None = None,
                  fusion_temperature_: float | None = None
                  ) -> tuple[BeadMetrics, list[Path], float]:
@@ -441,7 +427,7 @@ def post_process(case: Path, output: Path | None = None, time: float | None = No
     return result, pictures, float(grid.field_data['time'][0])
 
 
-def read_function_object_metrics(case: Path, name: str = "meltPoolMetrics") -> np.ndarray:
+def read_function_object_metrics(case: Case | Path, name: str = "meltPoolMetrics") -> np.ndarray:
     """Rows (time, metrics...) of postProcessing/<name>/*/meltPoolMetrics.dat, by time."""
     rows = []
     for data in sorted((Path(case) / "postProcessing" / name).glob("*/meltPoolMetrics.dat")):

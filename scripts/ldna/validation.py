@@ -41,7 +41,7 @@ import numpy as np
 from . import post
 from .balance import evaporation_table, patch_flows
 from .material import Metal
-from .foamcase import cpu_seconds
+from .case import Case
 from .meshing import cell_count
 
 #: Shortest window of the bead's mean section [s]; the window is a whole
@@ -128,7 +128,7 @@ def core_hours(case: Path, master_cpu_seconds: float | None = None) -> float:
     ``master_cpu_seconds`` for a run set up without it), not wall time, so
     that other work on the machine does not count.
     """
-    seconds = cpu_seconds(case) if master_cpu_seconds is None else master_cpu_seconds
+    seconds = Case(case).cpu_seconds() if master_cpu_seconds is None else master_cpu_seconds
     return seconds * ranks(case) / 3600
 
 
@@ -178,11 +178,9 @@ def section_metal_area(case: Path, x: float) -> float:
 
 def substrate_section(case: Path) -> float:
     """Transverse section of the substrate as meshed [m2]: depth x width."""
-    from .foamcase import dictionary_scalar
-
     parameters = "system/caseParameters"
-    return 1e-6 * (dictionary_scalar(case, parameters, "substrateDepth")
-                   * dictionary_scalar(case, parameters, "width"))
+    case = Case(case)
+    return 1e-6 * (case.scalar(parameters, "substrateDepth") * case.scalar(parameters, "width"))
 
 
 def metal_budget(case: Path, start: float, end: float, expected_area: float,

@@ -128,7 +128,7 @@ def test_failed_scene_does_not_block_the_next_attempt(tmp_path: Path) -> None:
     assert "ldnaFoam failed" in output and "ldna-scene: the case's Allrun -parallel failed" in output
     failed = tmp_path / "scene.failed"
     assert f"kept in {failed}" in output
-    assert (failed / "log.ldnaFoam").exists() and not case.exists()
+    assert (failed / "log.ldnaFoam").exists() and not case.path.exists()
 
     retry = run_as_user(scene_command(case))
     assert retry.returncode == 0, retry.output[-3000:]

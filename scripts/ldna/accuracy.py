@@ -404,7 +404,7 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
             print(f"  {member.cells} cells, {member.steps} steps, {member.wall_time:.1f} s "
                   f"wall, {member.core_seconds_per_ms:.3g} core-s per simulated ms", flush=True)
             members.append(member)
-    exact = scene.exact(out / "members" / members[0].name, members[0].end_time)
+    exact = scene.exact(Case(out / "members" / members[0].name), members[0].end_time)
     study = evaluate(scene, members, exact)
     paths = [out / "accuracy.csv", out / "accuracy.md", out / "accuracy.png"]
     write_csv(study, paths[0])

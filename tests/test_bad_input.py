@@ -7,8 +7,8 @@ allowed range, and no crash.  The unchanged case must run.
 """
 from __future__ import annotations
 
-
 import pytest
+
 from ldna.case import Case
 
 

@@ -22,8 +22,8 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.case import Case
 from ldna.balance import WIRE_COLUMNS, wire_table
+from ldna.case import Case
 
 VOLUME_TOLERANCE = 0.01
 ALPHA_BOUND = 1e-6

@@ -8,7 +8,6 @@ bead metrics in postProcessing/; Allclean removes the results.
 """
 from __future__ import annotations
 
-
 import pytest
 
 from ldna.case import Case

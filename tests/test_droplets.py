@@ -28,8 +28,8 @@ import numpy as np
 import pytest
 
 from conftest import prepare_test_case
-from ldna.case import Case
 from ldna.balance import WIRE_COLUMNS, wire_table
+from ldna.case import Case
 from ldna.material import Metal
 
 MASS_TOLERANCE = 0.01

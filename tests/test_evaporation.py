@@ -17,8 +17,8 @@ import re
 import numpy as np
 import pytest
 
-from ldna.case import Case
 from ldna.balance import evaporation_table
+from ldna.case import Case
 from ldna.material import Metal
 
 #: Evaporation data of iron (docs/physics-data.md): boiling point at 1 atm,

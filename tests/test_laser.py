@@ -19,7 +19,6 @@ from typing import Callable
 import numpy as np
 import pytest
 
-
 from conftest import TEST_CASES
 from ldna.case import Case
 

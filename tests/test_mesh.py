@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.case import Case
 from ldna import meshing
+from ldna.case import Case
 from ldna.foamdict import read_scalars
 
 TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"

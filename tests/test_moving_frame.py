@@ -7,7 +7,6 @@ enters.  The template's own files run with every effect but the porosity removed
 """
 from __future__ import annotations
 
-
 import numpy as np
 
 from ldna.case import Case

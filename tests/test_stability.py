@@ -29,8 +29,8 @@ from pathlib import Path
 
 import pytest
 
-from ldna.case import Case
 from ldna.balance import metal_mass_balance, solver_health
+from ldna.case import Case
 from ldna.foamdict import read_scalars, set_block_entry
 
 #: Metal fraction bounds: a bounded scheme keeps it within 1e-6 of [0, 1]

@@ -67,6 +67,15 @@ void Foam::metalGasMixture::readCoeffs()
         new metalProperties(metal, propertyCheckTmin, propertyCheckTmax, Tref)
     );
 
+    // Written whenever the properties are read, so that a dictionary
+    // changed during the run gets its table too (the newest file is the
+    // one in force)
+    metal_->writeTable
+    (
+        db(), typeName, propertyCheckTmin, limits::temperature,
+        propertyTableStep
+    );
+
     const dictionary& gas = subDict(phase2Name());
     ldna::checkKeys
     (
@@ -267,11 +276,6 @@ Foam::metalGasMixture::metalGasMixture
     gasDensity_()
 {
     readCoeffs();
-    metal_->writeTable
-    (
-        U.db(), typeName, propertyCheckTmin, ldna::limits::temperature,
-        propertyTableStep
-    );
     correct();
 
     if (min(T_).value() <= 0)

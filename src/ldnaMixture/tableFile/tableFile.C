@@ -44,13 +44,8 @@ void Foam::tableFile::writeRow(const scalarList& values)
 {
     if (writeToFile())
     {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        for (const scalar value : values)
-        {
-            os  << tab << value;
-        }
-        os  << endl;
+        writeCurrentTime(file());
+        writeValues(values);
     }
 }
 
@@ -59,14 +54,20 @@ void Foam::tableFile::writeRow(const scalar x, const scalarList& values)
 {
     if (writeToFile())
     {
-        OFstream& os = file();
-        os  << x;
-        for (const scalar value : values)
-        {
-            os  << tab << value;
-        }
-        os  << endl;
+        file() << x;
+        writeValues(values);
     }
+}
+
+
+void Foam::tableFile::writeValues(const scalarList& values)
+{
+    OFstream& os = file();
+    for (const scalar value : values)
+    {
+        os  << tab << value;
+    }
+    os  << endl;
 }
 
 

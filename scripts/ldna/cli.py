@@ -266,7 +266,7 @@ def build_parser() -> argparse.ArgumentParser:
                       help="position along the weld of the bead section [m] "
                            "[slice of largest bead area]")
     post.add_argument("--fusion-temperature", type=_positive_float,
-                      help="isotherm of the fusion line [K] [(solidus+liquidus)/2]")
+                      help="isotherm of the fusion line [K] [the solidus]")
     report = commands.add_parser(
         "bead-report",
         help="validation report of a long run: bead.json (figures, steadiness, mass "

@@ -6,12 +6,14 @@ Reads a case (reconstructed or decomposed) with pyvista and
   function object (src/ldnaFunctionObjects), which it runs at the time it
   reads with OpenFOAM's ``postProcess``: pool length and width,
   penetration, pool volume, bead width and height, bead and fused areas,
-  dilution, peak metal temperature; and adds the bead's wetting angle;
+  bonded and unbonded width, dilution, peak metal temperature; and adds the
+  bead's wetting angle;
 - renders, without a display, the pictures a welding engineer looks at:
   the free surface (alpha = 0.5) coloured by temperature, a transverse
-  section through the pool's largest section (without a pool: the bead
-  section) with the fusion line, and a
-  longitudinal section along the weld's centre line.
+  section through the deepest fusion (without fusion: the bead section)
+  with the fusion line the function object located (the pool's projection,
+  between cell centres), and a longitudinal section along the weld's
+  centre line with the fusion isotherm.
 
 The weld frame is the template's: x along the weld (the substrate moves to
 +x), y across it, z up, the substrate surface at z = surface_height.
@@ -55,6 +57,8 @@ class BeadMetrics:
     peak_temperature: float = 0.0
     bead_section: float = 0.0
     fused_section: float = 0.0
+    bonded_width: float = 0.0
+    unbonded_width: float = 0.0
     #: Secant angle of the bead's flanks at the toes [deg] (post only)
     wetting_angle: float = 0.0
 
@@ -62,7 +66,7 @@ class BeadMetrics:
     FUNCTION_OBJECT_COLUMNS = (
         "pool_length", "pool_width", "penetration", "pool_volume", "bead_width",
         "bead_height", "bead_area", "fused_area", "dilution", "peak_temperature",
-        "bead_section", "fused_section",
+        "bead_section", "fused_section", "bonded_width", "unbonded_width",
     )
 
     def as_dict(self) -> dict[str, float]:
@@ -71,9 +75,51 @@ class BeadMetrics:
 
 
 def fusion_temperature(case: Case | Path) -> float:
-    """(solidus + liquidus)/2 of the case's metal [K] (meltPoolMetrics' default)."""
-    metal = Metal.from_case(Path(case))
-    return 0.5 * (metal.solidus + metal.liquidus)
+    """The solidus of the case's metal [K]: meltPoolMetrics' default fusion line."""
+    return Metal.from_case(Path(case)).solidus
+
+
+#: meltPoolMetrics' table of the fusion line (postProcessing/<name>/<time>/<file>)
+FUSION_LINE_TABLE = "fusionLine.dat"
+
+
+def read_fusion_line(case: Case | Path, name: str, time: float) -> np.ndarray:
+    """The fusion line written by the meltPoolMetrics function object ``name``
+    at the time nearest ``time``: rows (transverse position, depth below the
+    surface) [m] ascending across the weld; the depth is negative where the
+    isotherm runs above the surface."""
+    rows = [np.loadtxt(table, comments="#", ndmin=2)
+            for table in (Path(case) / "postProcessing" / name).glob(f"*/{FUSION_LINE_TABLE}")]
+    rows = [r for r in rows if r.size]
+    if not rows:
+        return np.empty((0, 2))
+    table = np.vstack(rows)
+    nearest = table[np.argmin(np.abs(table[:, 0] - time)), 0]
+    line = table[table[:, 0] == nearest, 1:]
+    return line[np.argsort(line[:, 0], kind="stable")]
+
+
+def fused_outline(line: np.ndarray, surface_height: float = 0.0) -> np.ndarray:
+    """The fused zone's outline in the transverse plane, (y, z) points, from
+    the function object's fusion line: the surface where the depth passes
+    zero, the fusion line between.  The outline of each fused interval is
+    one run of points; runs are separated by a row of NaN."""
+    y, depth = line[:, 0], line[:, 1]
+    points: list[tuple[float, float]] = []
+    for k in range(len(y)):
+        if depth[k] <= 0:
+            continue
+        if k == 0 or depth[k - 1] <= 0:
+            if points:
+                points.append((np.nan, np.nan))
+            if k > 0:
+                edge = y[k - 1] + (y[k] - y[k - 1]) * depth[k - 1] / (depth[k - 1] - depth[k])
+                points.append((edge, surface_height))
+        points.append((y[k], surface_height - depth[k]))
+        if k + 1 < len(y) and depth[k + 1] <= 0:
+            edge = y[k] + (y[k + 1] - y[k]) * depth[k] / (depth[k] - depth[k + 1])
+            points.append((edge, surface_height))
+    return np.array(points).reshape(-1, 2)
 
 
 def read_case(case: Case | Path, time: float | None = None):
@@ -309,6 +355,8 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "pool_length_mm": 1e3 * result.pool_length,
         "pool_width_mm": 1e3 * result.pool_width,
         "fused_area_mm2": 1e6 * result.fused_area,
+        "bonded_width_mm": 1e3 * result.bonded_width,
+        "unbonded_width_mm": 1e3 * result.unbonded_width,
         "bead_section_mm": 1e3 * result.bead_section,
         "peak_metal_temperature_K": result.peak_temperature,
         "bead_arrival_s": bead_arrival_time(case, result.bead_section),
@@ -349,17 +397,30 @@ def render_surface(grid, path: Path, temperature_range: tuple[float, float]) -> 
 
 def render_section(grid, path: Path, normal: str, origin: tuple[float, float, float],
                    fusion_temperature_: float, temperature_range: tuple[float, float],
-                   title: str) -> Path:
-    """A plane section coloured by temperature, with the fusion line and free surface."""
+                   title: str, outline: np.ndarray | None = None) -> Path:
+    """A plane section coloured by temperature, with the fusion line and free surface.
+
+    ``outline``: (y, z) points of the fused zone in a transverse section
+    (``fused_outline``), drawn as the fusion line; without it the fusion
+    isotherm is contoured in the section's plane.
+    """
     section = grid.slice(normal=normal, origin=origin)
     plotter = _plotter()
     plotter.add_mesh(section, scalars="T", cmap="inferno", clim=temperature_range,
                      preference="cell", scalar_bar_args=_temperature_bar())
-    # The fusion line bounds molten metal: gas, however hot, is left out
-    metal_temperature = np.where(np.asarray(section.point_data["alpha.metal"]) >= METAL_THRESHOLD,
-                                 np.asarray(section.point_data["T"]), temperature_range[0])
-    section.point_data["metalT"] = metal_temperature
-    fusion_line = section.contour([fusion_temperature_], scalars="metalT", preference="point")
+    if outline is not None:
+        fusion_lines = [_polyline(run, origin[0]) for run in _runs(outline)]
+        fusion_label = "fusion line (pool's projection)"
+    else:
+        # The isotherm bounds metal: gas, however hot, is left out
+        metal_temperature = np.where(
+            np.asarray(section.point_data["alpha.metal"]) >= METAL_THRESHOLD,
+            np.asarray(section.point_data["T"]), temperature_range[0])
+        section.point_data["metalT"] = metal_temperature
+        fusion_lines = [section.contour([fusion_temperature_], scalars="metalT",
+                                        preference="point")]
+        fusion_label = "fusion isotherm"
+    fusion_lines = [line for line in fusion_lines if line.n_points]
     free_surface = section.contour([0.5], scalars="alpha.metal", preference="point")
     if normal == "x":
         plotter.view_yz()
@@ -370,18 +431,33 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
     camera = plotter.camera
     towards_camera = np.subtract(camera.position, camera.focal_point)
     lift = LINE_LIFT * grid.length * towards_camera / np.linalg.norm(towards_camera)
-    if fusion_line.n_points:
-        plotter.add_mesh(fusion_line.translate(lift, inplace=False), color="cyan",
-                         line_width=4, label="fusion line")
+    for k, line in enumerate(fusion_lines):
+        plotter.add_mesh(line.translate(lift, inplace=False), color="cyan", line_width=4,
+                         label=fusion_label if k == 0 else None)
     if free_surface.n_points:
         plotter.add_mesh(free_surface.translate(lift, inplace=False), color="white",
                          line_width=3, label="free surface")
-    if fusion_line.n_points or free_surface.n_points:
-        plotter.add_legend(bcolor="grey", size=(0.2, 0.1), loc="lower left")
+    if fusion_lines or free_surface.n_points:
+        plotter.add_legend(bcolor="grey", size=(0.25, 0.1), loc="lower left")
     plotter.add_text(title, color="black", font_size=12)
     plotter.screenshot(str(path))
     plotter.close()
     return path
+
+
+def _runs(outline: np.ndarray) -> list[np.ndarray]:
+    """The runs of an outline, split at its rows of NaN."""
+    breaks = np.nonzero(np.isnan(outline[:, 0]))[0]
+    runs = [chunk[~np.isnan(chunk[:, 0])] for chunk in np.split(outline, breaks)]
+    return [run for run in runs if len(run) > 1]
+
+
+def _polyline(yz: np.ndarray, x: float):
+    """A pyvista line through the (y, z) points in the plane at ``x``."""
+    import pyvista as pv
+
+    points = np.column_stack([np.full(len(yz), x), yz])
+    return pv.lines_from_points(points)
 
 
 def post_process(case: Case | Path, output: Path | None = None, time: float | None = None,
@@ -403,6 +479,7 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
     time_read = float(grid.field_data["time"][0])
     result = function_object_metrics(case, time_read, surface_height, bead_section,
                                      fusion_temperature_)
+    outline = fused_outline(read_fusion_line(case, POST_FUNCTION, time_read), surface_height)
     result.wetting_angle = bead_wetting_angle(grid, result.bead_section, surface_height)
 
     temperature = np.asarray(grid.cell_data["T"])
@@ -414,7 +491,8 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
         render_surface(grid, output / "surface.png", temperature_range),
         render_section(grid, output / "transverse.png", "x", (x_section, centre[1], centre[2]),
                        t_fusion, temperature_range,
-                       f"Transverse section x = {1e3 * x_section:.2f} mm, {time_label}"),
+                       f"Transverse section x = {1e3 * x_section:.2f} mm, {time_label}",
+                       outline),
         render_section(grid, output / "longitudinal.png", "y", (centre[0], 0.0, centre[2]),
                        t_fusion, temperature_range,
                        f"Longitudinal section y = 0, {time_label}"),
@@ -449,9 +527,11 @@ def format_metrics(result: BeadMetrics) -> str:
         f"bead height      {1e3 * result.bead_height:8.2f} mm",
         f"bead area        {1e6 * result.bead_area:8.2f} mm2",
         f"fused area       {1e6 * result.fused_area:8.2f} mm2",
+        f"bonded width     {1e3 * result.bonded_width:8.2f} mm",
+        f"unbonded width   {1e3 * result.unbonded_width:8.2f} mm",
         f"dilution         {100 * result.dilution:8.2f} %",
         f"peak metal T     {result.peak_temperature:8.1f} K",
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
-        f"fused section x  {1e3 * result.fused_section:8.2f} mm",
+        f"deepest fusion x {1e3 * result.fused_section:8.2f} mm",
         f"wetting angle    {result.wetting_angle:8.1f} deg",
     ])

@@ -63,8 +63,8 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
             "timeEnd", "executeControl", "executeInterval", "writeControl",
             "writeInterval", "writePrecision", "writeToFile", "useUserTime",
             "T", "alpha", "surfaceHeight", "weldingDirection",
-            "verticalDirection", "fusionTemperature", "metalThreshold",
-            "beadSection"
+            "verticalDirection", "fusionTemperature", "poolTemperature",
+            "metalThreshold", "beadSection"
         }
     );
 
@@ -101,11 +101,20 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
     }
     transverseDir_ = verticalDir_ ^ weldDir_;
 
+    // The substrate bonds where it began to melt; the pool is what flows
+    // (liquid fraction above one half)
+    const scalar solidus = metalDict.get<scalar>("solidus");
+    const scalar liquidus = metalDict.get<scalar>("liquidus");
     fusionTemperature_ = ldna::getCheckedOrDefault<scalar>
     (
         dict, "fusionTemperature",
+        ldna::interval::open(0, ldna::limits::temperature), solidus
+    );
+    poolTemperature_ = ldna::getCheckedOrDefault<scalar>
+    (
+        dict, "poolTemperature",
         ldna::interval::open(0, ldna::limits::temperature),
-        0.5*(metalDict.get<scalar>("solidus") + metalDict.get<scalar>("liquidus"))
+        0.5*(solidus + liquidus)
     );
     metalThreshold_ = ldna::getCheckedOrDefault<scalar>
     (
@@ -153,6 +162,14 @@ void Foam::functionObjects::meltPoolMetrics::calcCellBounds()
 
     sliceOrigin_ = wMin;
     nSlices_ = max(1, label(std::ceil((wMax - wMin)/sliceLength_ - SMALL)));
+
+    fusionLine_.reset
+    (
+        new fusionLine
+        (
+            mesh_, weldDir_, verticalDir_, surfaceHeight_, fusionTemperature_
+        )
+    );
 }
 
 
@@ -187,7 +204,7 @@ Foam::label Foam::functionObjects::meltPoolMetrics::largestSlice
 
 
 Foam::functionObjects::meltPoolMetrics::metrics
-Foam::functionObjects::meltPoolMetrics::calculate() const
+Foam::functionObjects::meltPoolMetrics::calculate()
 {
     const volScalarField& T = lookupObject<volScalarField>(TName_);
     const volScalarField& alpha = lookupObject<volScalarField>(alphaName_);
@@ -195,48 +212,35 @@ Foam::functionObjects::meltPoolMetrics::calculate() const
 
     metrics m;
 
-    // Pass 1: the pool, the peak temperature and the areas of each slice
+    // Pass 1: the pool, the peak temperature and the bead area of each slice
     boundBox pool(boundBox::invertedBox);
-    scalar poolBottom = GREAT;
-    scalarList fusedArea(nSlices_, Zero);
     scalarList beadArea(nSlices_, Zero);
 
     forAll(V, celli)
     {
         const boundBox& bb = cellBounds_[celli];
         const point c = bb.centre();
-        const scalar sliceArea = V[celli]/bb.span().x();
         const bool isMetal = alpha[celli] >= metalThreshold_;
-        const bool molten = isMetal && T[celli] >= fusionTemperature_;
-        const bool belowSurface = c.z() < surfaceHeight_;
 
         if (isMetal)
         {
             m.peakTemperature = max(m.peakTemperature, T[celli]);
         }
-        if (molten)
+        if (isMetal && T[celli] >= poolTemperature_)
         {
             pool.add(bb);
             m.poolVolume += alpha[celli]*V[celli];
-            if (belowSurface)
-            {
-                poolBottom = min(poolBottom, bb.min().z());
-                fusedArea[slice(c.x())] += sliceArea;
-            }
         }
-        if (!belowSurface)
+        if (c.z() >= surfaceHeight_)
         {
-            beadArea[slice(c.x())] += alpha[celli]*sliceArea;
+            beadArea[slice(c.x())] += alpha[celli]*V[celli]/bb.span().x();
         }
     }
 
     reduce(pool.min(), minOp<point>());
     reduce(pool.max(), maxOp<point>());
-    reduce(poolBottom, minOp<scalar>());
     reduce(m.poolVolume, sumOp<scalar>());
     reduce(m.peakTemperature, maxOp<scalar>());
-    Pstream::listCombineGather(fusedArea, plusEqOp<scalar>());
-    Pstream::listCombineScatter(fusedArea);
     Pstream::listCombineGather(beadArea, plusEqOp<scalar>());
     Pstream::listCombineScatter(beadArea);
 
@@ -245,13 +249,12 @@ Foam::functionObjects::meltPoolMetrics::calculate() const
         m.poolLength = pool.span().x();
         m.poolWidth = pool.span().y();
     }
-    if (poolBottom < surfaceHeight_)
-    {
-        m.penetration = surfaceHeight_ - poolBottom;
-    }
-    const label fusedSlice = largestSlice(fusedArea);
-    m.fusedArea = fusedArea[fusedSlice];
-    m.fusedSection = sliceCentre(fusedSlice);
+
+    // The fusion line between cell centres
+    fusionLine_->update(T);
+    m.penetration = fusionLine_->penetration();
+    m.fusedArea = fusionLine_->area();
+    m.fusedSection = fusionLine_->deepestSection();
 
     // The bead section: given, or the slice of largest bead area
     const label beadSlice =
@@ -282,6 +285,8 @@ Foam::functionObjects::meltPoolMetrics::calculate() const
     {
         m.beadWidth = bead.span().y();
         m.beadHeight = bead.max().z() - surfaceHeight_;
+        m.bondedWidth = fusionLine_->fusedWidth(bead.min().y(), bead.max().y());
+        m.unbondedWidth = m.beadWidth - m.bondedWidth;
     }
 
     const scalar depositedArea = m.fusedArea + m.beadArea;
@@ -303,6 +308,7 @@ void Foam::functionObjects::meltPoolMetrics::writeFileHeader(Ostream& os)
 
     writeHeader(os, "Melt pool and bead metrics");
     writeHeaderValue(os, "fusion temperature [K]", fusionTemperature_);
+    writeHeaderValue(os, "pool temperature [K]", poolTemperature_);
     writeHeaderValue(os, "surface height [m]", surfaceHeight_);
     writeHeaderValue(os, "slice length [m]", sliceLength_);
     writeCommented(os, "Time");
@@ -312,7 +318,8 @@ void Foam::functionObjects::meltPoolMetrics::writeFileHeader(Ostream& os)
         {
             "poolLength", "poolWidth", "penetration", "poolVolume",
             "beadWidth", "beadHeight", "beadArea", "fusedArea", "dilution",
-            "peakTemperature", "beadSection", "fusedSection"
+            "peakTemperature", "beadSection", "fusedSection", "bondedWidth",
+            "unbondedWidth"
         }
     )
     {
@@ -337,6 +344,7 @@ Foam::functionObjects::meltPoolMetrics::meltPoolMetrics
     writeFile(mesh_, name, typeName, dict),
     surfaceHeight_(0),
     fusionTemperature_(0),
+    poolTemperature_(0),
     metalThreshold_(0.5),
     fixedBeadSection_(false),
     beadSection_(0),
@@ -386,8 +394,8 @@ bool Foam::functionObjects::meltPoolMetrics::write()
     Log << type() << " " << name() << ": pool length " << m.poolLength
         << " m, width " << m.poolWidth << " m, penetration " << m.penetration
         << " m; bead width " << m.beadWidth << " m, height " << m.beadHeight
-        << " m, dilution " << m.dilution << "; peak T " << m.peakTemperature
-        << " K" << endl;
+        << " m, bonded width " << m.bondedWidth << " m, dilution "
+        << m.dilution << "; peak T " << m.peakTemperature << " K" << endl;
 
     if (writeToFile())
     {
@@ -399,13 +407,33 @@ bool Foam::functionObjects::meltPoolMetrics::write()
             {
                 m.poolLength, m.poolWidth, m.penetration, m.poolVolume,
                 m.beadWidth, m.beadHeight, m.beadArea, m.fusedArea,
-                m.dilution, m.peakTemperature, m.beadSection, m.fusedSection
+                m.dilution, m.peakTemperature, m.beadSection, m.fusedSection,
+                m.bondedWidth, m.unbondedWidth
             }
         )
         {
             file() << tab << value;
         }
         file() << endl;
+
+        if (!fusionLineFile_.valid())
+        {
+            fusionLineFile_ = createFile("fusionLine");
+            if (fusionLineFile_.valid())
+            {
+                OFstream& os = fusionLineFile_();
+                writeHeader(os, "Fusion line: depth of the fusion isotherm per column");
+                writeHeaderValue(os, "fusion temperature [K]", fusionTemperature_);
+                writeCommented(os, "Time");
+                writeTabbed(os, "transverse");
+                writeTabbed(os, "depth");
+                os  << endl;
+            }
+        }
+        if (fusionLineFile_.valid())
+        {
+            fusionLine_->writeProfile(fusionLineFile_(), mesh_.time().timeName());
+        }
     }
 
     return true;

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import subprocess
 import time
@@ -60,9 +61,15 @@ def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
     case = Case(tmp_path / "scene")
     before = build_stamps()
 
-    scene = run_as_user(scene_command(case), shell=shell)
+    # A progress line every second, so that this short run shows some
+    scene = run_as_user(scene_command(case), shell=shell, LDNA_PROGRESS_INTERVAL="1")
 
     assert scene.returncode == 0, scene.output[-3000:]
+    progress = [float(m.group(1)) for m in
+                re.finditer(r"^  t = (\S+) of [\d.e-]+ s, \d+ steps, \d+ s wall time", scene.output,
+                            re.M)]
+    assert progress, "no progress line while the solver ran"
+    assert progress == sorted(progress) and progress[-1] <= END_TIME
     assert "[ldna-install]" not in scene.output, "an installed machine installs nothing"
     assert build_stamps() == before, "a built machine rebuilds nothing"
     # The last step is written whatever the write interval; OpenFOAM ends a

@@ -88,9 +88,13 @@ def read_fusion_line(case: Case | Path, name: str, time: float) -> np.ndarray:
     at the time nearest ``time``: rows (transverse position, depth below the
     surface) [m] ascending across the weld; the depth is negative where the
     isotherm runs above the surface."""
-    rows = [np.loadtxt(table, comments="#", ndmin=2)
-            for table in (Path(case) / "postProcessing" / name).glob(f"*/{FUSION_LINE_TABLE}")]
-    rows = [r for r in rows if r.size]
+    rows = []
+    for table in (Path(case) / "postProcessing" / name).glob(f"*/{FUSION_LINE_TABLE}"):
+        # A time without any isotherm crossing writes no row
+        data = [line for line in table.read_text().splitlines()
+                if line.strip() and not line.startswith("#")]
+        if data:
+            rows.append(np.loadtxt(data, ndmin=2))
     if not rows:
         return np.empty((0, 2))
     table = np.vstack(rows)

@@ -52,7 +52,7 @@ FRESNEL_TOLERANCE = 0.002
 
 #: Columns of postProcessing/laser/<time>/power.dat
 BALANCE_COLUMNS = ("time", "x", "y", "z", "emitted", "metal", "gas", "reflected", "escaped",
-                   "stopped", "imbalance")
+                   "stopped", "imbalance", "pool", "deposit", "substrate")
 
 
 def laser_entry(model: str, extra: str = "", coeffs: str = "") -> str:
@@ -493,6 +493,43 @@ def test_metal_in_the_beam_shades_the_surface(laser_slab_case: Case, model: str)
           f"sphere {absorbed[centres[:, 2] > CENTRE[2]].sum():.3f} W")
     assert abs(slab - expected) < SHADOW_TOLERANCE * ABSORPTIVITY * POWER
     assert_balance_closes(laser_balances(case))
+
+
+#: Region test: the pool's edge POOL_EDGE beyond the beam's axis, and the
+#: substrate surface DEPOSIT_DEPTH below the slab's top (cell faces both)
+POOL_EDGE = 0.5e-3
+DEPOSIT_DEPTH = 0.5e-3
+POOL_TEMPERATURE = 1800.0
+REGION_TOLERANCE = 1e-3
+
+
+def test_absorbed_power_by_region(laser_slab_case: Case) -> None:
+    """Beer-Lambert on a slab whose metal is molten for x < x_target + d, with
+    the substrate surface 0.5 mm below its top: the pool takes the beam's
+    share on that side, Phi(d sqrt(6) / R) for the profile exp(-3 r^2 / R^2);
+    of the rest, the solid deposit above the surface takes
+    (1 - exp(-mu 0.5 mm)) / (1 - exp(-mu 2 mm)) and the substrate below it
+    the remainder (the rays cross the 2 mm slab)."""
+    case = laser_slab_case
+    centres = cell_centres(case)
+    molten = (centres[:, 0] < CENTRE[0] + POOL_EDGE) & (centres[:, 2] < CENTRE[2])
+    case.write_field("T", np.where(molten, POOL_TEMPERATURE, 300.0))
+    surface = CENTRE[2] - DEPOSIT_DEPTH
+    write_fv_options(case, laser_entry("beerLambert", extra=f"surfaceHeight {surface};"))
+    case.run("ldnaFoam")
+
+    first = laser_balances(case)[0]
+    metal = first["metal"]
+    pool_share = 0.5 * (1 + math.erf(POOL_EDGE * math.sqrt(6) / BEAM_RADIUS / math.sqrt(2)))
+    top_share = (1 - math.exp(-MU * DEPOSIT_DEPTH)) / (1 - math.exp(-MU * CENTRE[2]))
+    expected = {"pool": pool_share * metal,
+                "deposit": (1 - pool_share) * top_share * metal,
+                "substrate": (1 - pool_share) * (1 - top_share) * metal}
+    for region, value in expected.items():
+        print(f"{region}: {first[region]:.4f} W, expected {value:.4f} W")
+        assert first[region] == pytest.approx(value, rel=REGION_TOLERANCE), region
+    assert first["pool"] + first["deposit"] + first["substrate"] == pytest.approx(metal,
+                                                                                rel=1e-9)
 
 
 def test_radiation_loss_of_a_hot_surface(laser_slab_case: Case) -> None:

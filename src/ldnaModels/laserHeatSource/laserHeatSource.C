@@ -40,7 +40,8 @@ const Foam::label nStartBins = 64;
 const Foam::wordList powerColumns
 ({
     "targetX", "targetY", "targetZ", "emitted", "absorbedMetal",
-    "absorbedGas", "reflected", "escaped", "stopped", "imbalance"
+    "absorbedGas", "reflected", "escaped", "stopped", "imbalance",
+    "absorbedPool", "absorbedDeposit", "absorbedSubstrate"
 });
 
 } // End anonymous namespace
@@ -53,7 +54,11 @@ const Foam::dictionary& Foam::fv::laserHeatSource::checkedKeys
     const dictionary& coeffs
 )
 {
-    wordList known({"type", "active", "alpha", "T", "log"});
+    wordList known
+    ({
+        "type", "active", "alpha", "T", "log", "liquidFraction",
+        "surfaceHeight", "verticalDirection"
+    });
     known.append(laserBeam::keys);
     known.append(laserAbsorptionModel::keys);
     ldna::checkKeys(coeffs, known);
@@ -68,7 +73,17 @@ void Foam::fv::laserHeatSource::readCoeffs()
 
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     TName_ = coeffs_.lookupOrDefault<word>("T", "T");
+    liquidFractionName_ =
+        coeffs_.lookupOrDefault<word>("liquidFraction", "liquidFraction");
     log_ = coeffs_.lookupOrDefault<bool>("log", true);
+
+    surfaceHeight_ = ldna::getCheckedOrDefault<scalar>
+    (
+        coeffs_, "surfaceHeight",
+        ldna::interval::open(-ldna::limits::length, ldna::limits::length), 0
+    );
+    const vector up(0, 0, 1);
+    verticalDir_ = ldna::getDirection(coeffs_, "verticalDirection", &up);
 
     fieldNames_.setSize(1, TName_);
     applied_.setSize(1, false);
@@ -290,12 +305,42 @@ void Foam::fv::laserHeatSource::update()
     const scalar stopped = returnReduce(td.stopped, sumOp<scalar>());
     const scalar imbalance = P - byMetal - byGas - reflected - escaped - stopped;
 
+    // Where the metal's part went: the pool, the solid deposit above the
+    // substrate surface, the solid substrate below it
+    const volScalarField& liquidFraction =
+        mesh_.lookupObject<volScalarField>(liquidFractionName_);
+    const vectorField& C = mesh_.C();
+    scalar byPool = 0;
+    scalar byDeposit = 0;
+    scalar bySubstrate = 0;
+    forAll(absorbed, celli)
+    {
+        const scalar byCellMetal = alphaClipped[celli]*absorbed[celli];
+        if (liquidFraction[celli] > 0)
+        {
+            byPool += byCellMetal;
+        }
+        else if ((C[celli] & verticalDir_) >= surfaceHeight_)
+        {
+            byDeposit += byCellMetal;
+        }
+        else
+        {
+            bySubstrate += byCellMetal;
+        }
+    }
+    reduce(byPool, sumOp<scalar>());
+    reduce(byDeposit, sumOp<scalar>());
+    reduce(bySubstrate, sumOp<scalar>());
+
     if (log_)
     {
         Info<< type() << ' ' << name_ << ": t = " << t
             << " s, target = " << c
             << ", emitted = " << P
             << " W, absorbed by metal = " << byMetal
+            << " W (pool " << byPool << ", deposit " << byDeposit
+            << ", substrate " << bySubstrate << ")"
             << " W, by gas = " << byGas
             << " W, reflected = " << reflected
             << " W, escaped = " << escaped
@@ -306,7 +351,7 @@ void Foam::fv::laserHeatSource::update()
     powerFile_.writeRow
     ({
         c.x(), c.y(), c.z(), P, byMetal, byGas, reflected, escaped, stopped,
-        imbalance
+        imbalance, byPool, byDeposit, bySubstrate
     });
 }
 
@@ -325,6 +370,8 @@ Foam::fv::laserHeatSource::laserHeatSource
     beam_(checkedKeys(coeffs_)),
     absorption_(),
     log_(true),
+    surfaceHeight_(0),
+    verticalDir_(0, 0, 1),
     powerDensity_
     (
         IOobject

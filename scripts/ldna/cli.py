@@ -74,6 +74,17 @@ def _accuracy(args: argparse.Namespace) -> int:
     return 0
 
 
+def _steady(args: argparse.Namespace) -> int:
+    from . import steady
+
+    verdict = steady.case_steadiness(Path(args.case), args.section)
+    if args.json:
+        print(json.dumps(verdict.as_dict()))
+    else:
+        print(steady.format_steadiness(verdict))
+    return 0
+
+
 def _bead_report(args: argparse.Namespace) -> int:
     from . import validation
 
@@ -281,6 +292,20 @@ def build_parser() -> argparse.ArgumentParser:
                         help="the solver's CPU time on its master rank [s], for a run "
                              "without the timeInfo table (default: from postProcessing/timeInfo)")
     report.set_defaults(func=_bead_report)
+
+    steady_command = commands.add_parser(
+        "steady",
+        help="is the bead quasi-steady? every section metric's mean over the last window "
+             "of whole ripple periods against the window before (works on a running case)",
+    )
+    steady_command.add_argument("case", nargs="?", default=".", type=_case,
+                                help="case directory")
+    steady_command.add_argument("--section", default="meltPoolMetrics",
+                                help="the meltPoolMetrics function object to judge "
+                                     "(default: meltPoolMetrics)")
+    steady_command.add_argument("--json", action="store_true",
+                                help="print the verdict and every metric's figures as JSON (SI)")
+    steady_command.set_defaults(func=_steady)
 
     post.add_argument("--json", action="store_true",
                       help="print the bead figures as one JSON object (mm, mm2, K, deg) "

@@ -2,16 +2,11 @@
 
 A run of the template from a flat substrate is quasi-steady once the bead's
 transverse section at the function object's fixed section (``beadSection``
-of meltPoolMetrics, behind the pool) stops changing.  The section's area
-varies along the weld - ripples, as on a real bead: the pool sloshes, and
-the area at the fixed section swings by about 10 % with a period of
-0.6-0.7 s (4.5-5 mm of bead) - so the bead is judged on its mean over a
-window of whole ripple periods (:func:`averaging_window`, the period
-measured from the area's crossings of its mean after the bead's arrival):
-quasi-steady when the means over the last window and over the one before
-agree within ``STEADY_TOLERANCE``.  Then the mass
-balance holds whatever the models: the mean section equals the wires' mass
-rate over (metal density x welding speed).
+of meltPoolMetrics, behind the pool) stops changing: every metric's mean
+over a window of whole ripple periods agrees with the window before
+(:mod:`ldna.steady`).  Then the mass balance holds whatever the models: the
+mean section equals the wires' mass rate over (metal density x welding
+speed).
 
 The report reads the function object's table (bead area over time) and the
 case's last time (``ldna post``: metrics and pictures), and writes
@@ -19,7 +14,8 @@ case's last time (``ldna post``: metrics and pictures), and writes
 - ``bead.json``: the figures of ``ldna post --json`` (at the last time)
   plus ``end_time_s``, ``cells``, ``n_procs``, ``core_hours`` (and per
   simulated second), the mean areas over the last two windows, ``steady``
-  (bool), the area's range over the last window and the mass balance error
+  (bool) and ``steadiness`` (every metric's window means, change and
+  tolerance), the area's range over the last window and the mass balance error
   of the mean; and, as a check that needs no surface height, the net metal
   area the process added to the section at the last time (all metal in the
   plane minus the substrate's section) and its error;
@@ -38,20 +34,15 @@ from pathlib import Path
 
 import numpy as np
 
-from . import post
+from . import post, steady
 from .balance import evaporation_table, patch_flows
 from .material import Metal
 from .case import Case
 from .meshing import cell_count
 
-#: Shortest window of the bead's mean section [s]; the window is a whole
-#: number of the bead's ripple periods (0.6-0.7 s, 4.5-5 mm of bead, in the
-#: template's 6 s run), so that the ripple averages out of the mean
-MIN_AVERAGING_WINDOW = 0.5
-#: The means over the last two windows agree within this share
-STEADY_TOLERANCE = 0.01
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
 BEAD_AREA_COLUMN = 1 + post.BeadMetrics.FUNCTION_OBJECT_COLUMNS.index("bead_area")
+
 
 def bead_area_history(case: Path, section: str = "meltPoolMetrics"
                       ) -> tuple[np.ndarray, np.ndarray]:
@@ -59,61 +50,6 @@ def bead_area_history(case: Path, section: str = "meltPoolMetrics"
     function object ``section``."""
     table = post.read_function_object_metrics(case, section)
     return table[:, 0], table[:, BEAD_AREA_COLUMN]
-
-
-def window_mean(times: np.ndarray, areas: np.ndarray, start: float, end: float) -> float:
-    """Time-weighted mean of the area over [start, end] (the table's steps vary)."""
-    inside = (times >= start) & (times <= end)
-    if inside.sum() < 2:
-        return float("nan")
-    t, a = times[inside], areas[inside]
-    return float(np.trapezoid(a, t) / (t[-1] - t[0]))
-
-
-def ripple_period(times: np.ndarray, areas: np.ndarray, start: float) -> float | None:
-    """The ripple's period [s] after ``start``: the median spacing of the
-    area's upward crossings of its mean there; None with fewer than three
-    crossings."""
-    after = times >= start
-    t, a = times[after], areas[after]
-    if t.size < 3:
-        return None
-    above = a > window_mean(t, a, t[0], t[-1])
-    crossings = t[1:][above[1:] & ~above[:-1]]
-    if crossings.size < 3:
-        return None
-    return float(np.median(np.diff(crossings)))
-
-
-def averaging_window(times: np.ndarray, areas: np.ndarray, start: float) -> float:
-    """Whole ripple periods, at least MIN_AVERAGING_WINDOW [s] (that, without a ripple)."""
-    period = ripple_period(times, areas, start)
-    if period is None:
-        return MIN_AVERAGING_WINDOW
-    return period * math.ceil(MIN_AVERAGING_WINDOW / period - 1e-9)
-
-
-def steadiness(times: np.ndarray, areas: np.ndarray, start: float | None = None) -> dict:
-    """The mean areas [m2] over the last two windows of whole ripple periods
-    (measured after ``start``, the bead's arrival at the section), whether they
-    agree, and the area's range over the last window."""
-    start = times[0] if start is None else start
-    window = averaging_window(times, areas, start)
-    end = times[-1]
-    last = window_mean(times, areas, end - window, end)
-    previous = window_mean(times, areas, end - 2 * window, end - window)
-    change = abs(last - previous) / last if last > 0 else float("inf")
-    in_last = times >= end - window
-    return {
-        "steady": bool(end - max(times[0], start) >= 2 * window
-                       and change <= STEADY_TOLERANCE),
-        "window": window,
-        "mean": last,
-        "previous_mean": previous,
-        "change": float(change),
-        "min": float(areas[in_last].min()),
-        "max": float(areas[in_last].max()),
-    }
 
 
 def ranks(case: Path) -> int:
@@ -226,7 +162,9 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         case, output / "pictures", bead_section=post.configured_bead_section(case, section))
     figures = post.summary(case, result, time)
     times, areas = bead_area_history(case, section)
-    means = steadiness(times, areas, start=figures["bead_arrival_s"])
+    verdict = steady.case_steadiness(case, section)
+    area = verdict.metrics["bead_area"]
+    means = {"window": verdict.window, "mean": area.mean, "previous_mean": area.previous_mean}
     end = float(times[-1])
     figures.update({
         "section_function_object": section,
@@ -235,14 +173,15 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         "n_procs": ranks(case),
         "core_hours": hours,
         "core_hours_per_simulated_s": hours / float(times[-1]),
-        "averaging_window_s": means["window"],
-        "mean_bead_area_mm2": 1e6 * means["mean"],
-        "previous_mean_bead_area_mm2": 1e6 * means["previous_mean"],
-        "steady": means["steady"],
-        "mean_change": means["change"],
-        "bead_area_min_mm2": 1e6 * means["min"],
-        "bead_area_max_mm2": 1e6 * means["max"],
-        "mass_balance_error": 1e6 * means["mean"] / figures["expected_bead_area_mm2"] - 1,
+        "averaging_window_s": verdict.window,
+        "mean_bead_area_mm2": 1e6 * area.mean,
+        "previous_mean_bead_area_mm2": 1e6 * area.previous_mean,
+        "steady": verdict.steady,
+        "steadiness": verdict.as_dict(),
+        "mean_change": area.change / area.mean if area.mean > 0 else float("inf"),
+        "bead_area_min_mm2": 1e6 * area.low,
+        "bead_area_max_mm2": 1e6 * area.high,
+        "mass_balance_error": 1e6 * area.mean / figures["expected_bead_area_mm2"] - 1,
     })
     figures.update(metal_budget(case, end - means["window"], end,
                                 1e-6 * figures["expected_bead_area_mm2"], means["mean"]))

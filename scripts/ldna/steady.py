@@ -1,0 +1,178 @@
+"""Is the bead quasi-steady?  (``ldna steady``)
+
+A weld in the moving frame is quasi-steady when what a macro-section shows
+stops changing.  The bead ripples (the pool sloshes: in the template's runs
+the section's area swings by about 10 % with a period of 0.6-0.7 s), so each
+metric is judged on its time-weighted mean over a window of whole ripple
+periods: quasi-steady when the means over the last window and over the
+window before agree, for every metric, within ``RELATIVE_TOLERANCE`` of the
+last mean or the metric's absolute floor (``ABSOLUTE_FLOORS``: a metric
+that is zero, such as the penetration of a clad that did not fuse, is
+steady at zero).  The window is the bead area's ripple period, measured from
+its upward crossings of its mean, times the whole number that reaches
+``MIN_WINDOW``; without a ripple, ``MIN_WINDOW``.  Two windows must lie
+after the bead reached the section (``start``), and the section must hold
+a bead.
+
+The metrics are those the ``meltPoolMetrics`` function object writes every
+few steps (``postProcessing/<name>/*/meltPoolMetrics.dat``): the judgement
+needs no fields and works on a run that is still going.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import post
+
+#: Shortest averaging window [s]: the template's ripple period is 0.56-0.7 s
+MIN_WINDOW = 0.5
+#: Two consecutive window means agree within this share of the last one
+RELATIVE_TOLERANCE = 0.01
+#: ... or within these absolute floors (SI units): a twentieth of the thinnest
+#: bond a low-dilution clad aims at (0.05 mm) for lengths; for areas the
+#: same length times a millimetre; a thousandth for the dilution
+LENGTH_FLOOR = 2.5e-6
+ABSOLUTE_FLOORS = {
+    "bead_area": LENGTH_FLOOR * 1e-3,
+    "bead_width": LENGTH_FLOOR,
+    "bead_height": LENGTH_FLOOR,
+    "bonded_width": LENGTH_FLOOR,
+    "penetration": LENGTH_FLOOR,
+    "fused_area": LENGTH_FLOOR * 1e-3,
+    "dilution": 1e-3,
+    "pool_length": LENGTH_FLOOR,
+    "pool_width": LENGTH_FLOOR,
+}
+#: The metrics judged (columns of meltPoolMetrics.dat)
+METRICS = tuple(ABSOLUTE_FLOORS)
+
+
+def window_mean(times: np.ndarray, values: np.ndarray, start: float, end: float) -> float:
+    """Time-weighted mean of ``values`` over [start, end] (the table's steps vary)."""
+    inside = (times >= start) & (times <= end)
+    if inside.sum() < 2:
+        return float("nan")
+    t, v = times[inside], values[inside]
+    return float(np.trapezoid(v, t) / (t[-1] - t[0]))
+
+
+def ripple_period(times: np.ndarray, values: np.ndarray, start: float) -> float | None:
+    """The ripple's period [s] after ``start``: the median spacing of the
+    values' upward crossings of their mean there; None with fewer than three
+    crossings."""
+    after = times >= start
+    t, v = times[after], values[after]
+    if t.size < 3:
+        return None
+    above = v > window_mean(t, v, t[0], t[-1])
+    crossings = t[1:][above[1:] & ~above[:-1]]
+    if crossings.size < 3:
+        return None
+    return float(np.median(np.diff(crossings)))
+
+
+def averaging_window(times: np.ndarray, values: np.ndarray, start: float,
+                     min_window: float = MIN_WINDOW) -> float:
+    """Whole ripple periods, at least ``min_window`` [s] (that, without a ripple)."""
+    period = ripple_period(times, values, start)
+    if period is None:
+        return min_window
+    return period * math.ceil(min_window / period - 1e-9)
+
+
+@dataclass
+class MetricSteadiness:
+    """One metric over the last two windows (SI units)."""
+
+    mean: float
+    previous_mean: float
+    change: float
+    tolerance: float
+    low: float
+    high: float
+
+    @property
+    def steady(self) -> bool:
+        return bool(self.change <= self.tolerance)
+
+
+@dataclass
+class Steadiness:
+    """The verdict on a run's bead and the figures behind it."""
+
+    steady: bool
+    reason: str
+    end_time: float
+    window: float
+    metrics: dict[str, MetricSteadiness] = field(default_factory=dict)
+
+    def as_dict(self) -> dict:
+        """JSON-ready: every metric's means, change, tolerance and range."""
+        return {"steady": self.steady, "reason": self.reason, "end_time_s": self.end_time,
+                "window_s": self.window,
+                "metrics": {name: {**asdict(m), "steady": m.steady}
+                            for name, m in self.metrics.items()}}
+
+
+def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None = None,
+          min_window: float = MIN_WINDOW) -> Steadiness:
+    """Judge the metrics ``table`` (name -> values at ``times``) for steadiness.
+
+    ``start``: when the bead reached the section (default: the first time).
+    """
+    start = float(times[0]) if start is None else max(float(start), float(times[0]))
+    window = averaging_window(times, table["bead_area"], start, min_window)
+    end = float(times[-1])
+    metrics = {}
+    for name in METRICS:
+        values = table[name]
+        last = window_mean(times, values, end - window, end)
+        previous = window_mean(times, values, end - 2 * window, end - window)
+        in_last = times >= end - window
+        metrics[name] = MetricSteadiness(
+            mean=last, previous_mean=previous, change=abs(last - previous),
+            tolerance=max(RELATIVE_TOLERANCE * abs(last), ABSOLUTE_FLOORS[name]),
+            low=float(values[in_last].min()), high=float(values[in_last].max()))
+    if end - start < 2 * window:
+        verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival, "
+                                  f"two windows of {window:.3g} s needed")
+    elif not metrics["bead_area"].mean > 0:
+        verdict, reason = False, "no bead at the section"
+    else:
+        changing = [n for n, m in metrics.items() if not m.steady]
+        verdict = not changing
+        reason = ("every metric's mean within its tolerance of the window before" if verdict
+                  else "still changing: " + ", ".join(changing))
+    return Steadiness(verdict, reason, end, window, metrics)
+
+
+def case_steadiness(case: Path, section: str = "meltPoolMetrics",
+                    min_window: float = MIN_WINDOW) -> Steadiness:
+    """Judge the metrics that the function object ``section`` of ``case`` wrote,
+    from the bead's arrival at its section on."""
+    rows = post.read_function_object_metrics(case, section)
+    columns = post.BeadMetrics.FUNCTION_OBJECT_COLUMNS
+    table = {name: rows[:, 1 + columns.index(name)] for name in METRICS}
+    times = rows[:, 0]
+    section_x = rows[-1, 1 + columns.index("bead_section")]
+    return judge(times, table, post.bead_arrival_time(case, section_x), min_window)
+
+
+def format_steadiness(verdict: Steadiness) -> str:
+    """A table of the metrics' window means, as a welding engineer reads them."""
+    scale = {name: (1e6, "mm2") if name.endswith("area") else (1.0, "-")
+             if name == "dilution" else (1e3, "mm") for name in METRICS}
+    lines = [f"{'metric':<14}{'last window':>13}{'window before':>15}{'change':>10}"
+             f"{'tolerance':>11}  unit"]
+    for name, m in verdict.metrics.items():
+        factor, unit = scale[name]
+        lines.append(f"{name:<14}{factor * m.mean:13.4g}{factor * m.previous_mean:15.4g}"
+                     f"{factor * m.change:10.3g}{factor * m.tolerance:11.3g}  {unit}"
+                     f"{'' if m.steady else '  changing'}")
+    lines.append(f"windows of {verdict.window:.3g} s to t = {verdict.end_time:.4g} s: "
+                 f"{'quasi-steady' if verdict.steady else 'not steady'} ({verdict.reason})")
+    return "\n".join(lines)

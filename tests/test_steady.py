@@ -1,0 +1,128 @@
+"""Steadiness of the bead (``ldna steady``): the criterion on rippled metrics
+(unit tests) and on a real run whose bead is still growing."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from ldna.case import Case
+from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, averaging_window, judge,
+                         ripple_period, window_mean)
+
+#: A bead of mean section 35 mm2 whose area swings by 10 % with a period
+#: longer than the shortest window (as the template's bead: 0.6-0.7 s)
+MEAN_AREA = 35e-6
+RIPPLE = 3.5e-6
+PERIOD = 0.65
+#: The other metrics of the synthetic bead: means [SI], rippling with the area;
+#: large enough that 1.6 % of them exceeds their absolute floors
+MEANS = {"bead_area": MEAN_AREA, "bead_width": 15e-3, "bead_height": 3e-3,
+         "bonded_width": 10e-3, "penetration": 0.3e-3, "fused_area": 3e-6, "dilution": 0.08,
+         "pool_length": 15e-3, "pool_width": 11e-3}
+
+
+def sampled(end: float, trend: float = 0.0, period: float = PERIOD
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Irregular time steps (as the adjustable step writes them) of a rippled area."""
+    rng = np.random.default_rng(3)
+    times = np.cumsum(rng.uniform(0.5e-3, 1.5e-3, int(end / 1e-3) + 10))
+    times = times[times <= end]
+    areas = (MEAN_AREA * (1 + trend * times)
+             + RIPPLE * np.sin(2 * np.pi * times / period))
+    return times, areas
+
+
+def bead(end: float, growing: str | None = None, trend: float = 0.025
+         ) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """Every metric rippling by 10 % about its mean; ``growing`` grows by ``trend`` a second."""
+    times, _ = sampled(end)
+    ripple = 0.1 * np.sin(2 * np.pi * times / PERIOD)
+    table = {name: mean * (1 + ripple + (trend * times if name == growing else 0))
+             for name, mean in MEANS.items()}
+    return times, table
+
+
+@pytest.mark.unit
+def test_the_window_is_whole_ripple_periods() -> None:
+    times, areas = sampled(4.0)
+    assert ripple_period(times, areas, 0.0) == pytest.approx(PERIOD, rel=1e-2)
+    assert averaging_window(times, areas, 0.0) == pytest.approx(PERIOD, rel=1e-2)
+    # A short ripple: as many periods as make the shortest window
+    short = sampled(4.0, period=0.2)
+    assert averaging_window(*short, 0.0) == pytest.approx(0.6, rel=1e-2)
+    # No ripple: the shortest window
+    assert averaging_window(times, np.full_like(times, MEAN_AREA), 0.0) == MIN_WINDOW
+
+
+@pytest.mark.unit
+def test_window_mean_of_a_ripple_is_its_mean() -> None:
+    times, areas = sampled(4.0)
+    window = averaging_window(times, areas, 0.0)
+    mean = window_mean(times, areas, times[-1] - window, times[-1])
+    # A window of whole periods: the ripple averages out but for the
+    # period's estimate and the steps' discreteness at its ends
+    assert mean == pytest.approx(MEAN_AREA, rel=2e-3)
+    # A window of 0.5 s on the 0.65 s ripple does not average it out
+    off = window_mean(times, areas, times[-1] - 0.5, times[-1])
+    assert abs(off / MEAN_AREA - 1) > RELATIVE_TOLERANCE
+
+
+@pytest.mark.unit
+def test_a_steady_ripple_passes() -> None:
+    verdict = judge(*bead(4.0))
+    assert verdict.steady, verdict.reason
+    area = verdict.metrics["bead_area"]
+    assert area.low == pytest.approx(0.9 * MEAN_AREA, rel=1e-3)
+    assert area.high == pytest.approx(1.1 * MEAN_AREA, rel=1e-3)
+
+
+@pytest.mark.unit
+@pytest.mark.parametrize("metric", METRICS)
+def test_any_growing_metric_is_not_steady(metric: str) -> None:
+    """2.5 % a second: the two windows' means differ by about 1.6 %."""
+    verdict = judge(*bead(4.0, growing=metric))
+    assert not verdict.steady
+    assert verdict.reason == f"still changing: {metric}"
+
+
+@pytest.mark.unit
+def test_too_short_or_empty_is_not_steady() -> None:
+    assert "too short" in judge(*bead(4.0), start=3.0).reason
+    times, table = bead(4.0)
+    table["bead_area"] = np.zeros_like(times)
+    assert judge(times, table).reason == "no bead at the section"
+    # A metric that stays zero (no fusion) is steady at zero
+    times, table = bead(4.0)
+    table["penetration"] = np.zeros_like(times)
+    assert judge(times, table).steady
+
+
+def test_a_run_still_growing_is_not_steady(ldna_case: Case) -> None:
+    """The template's first 40 ms, judged at the section under the droplets with
+    windows of 10 ms: the bead there grows with every droplet, so the tool
+    must say 'not steady', and say which metrics change."""
+    case = ldna_case
+    case.set("system/controlDict", "endTime", "0.04")
+    under_droplets = 1e-3 * case.scalar("system/caseParameters", "processPosition")
+    for entry, value in (("writeInterval", "1"), ("beadSection", f"{under_droplets:g}")):
+        case.run(f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
+                 "system/controlDict", log_name="foamDictionary")
+    case.mesh()
+    case.run("setFields")
+    case.run("ldnaFoam")
+
+    from ldna.steady import case_steadiness
+
+    verdict = case_steadiness(case.path, min_window=0.01)
+    print(verdict.reason)
+    area = verdict.metrics["bead_area"]
+    assert area.mean > area.previous_mean > 0, "the deposit under the droplets grows"
+    assert not verdict.steady and "bead_area" in verdict.reason
+    # The command line says the same
+    output = subprocess.run([sys.executable, "-m", "ldna.cli", "steady", str(case), "--json"],
+                            capture_output=True, text=True, check=True).stdout
+    assert json.loads(output)["steady"] is False

@@ -85,6 +85,16 @@ def _steady(args: argparse.Namespace) -> int:
     return 0
 
 
+def _steady_start(args: argparse.Namespace) -> int:
+    from . import steady_start
+    from .case import Case
+
+    figures = steady_start.write_estimate(Case(Path(args.case)))
+    print(json.dumps(figures) if args.json else
+          "\n".join(f"{key:<32}{value:10.4g}" for key, value in figures.items()))
+    return 0
+
+
 def _bead_report(args: argparse.Namespace) -> int:
     from . import validation
 
@@ -306,6 +316,15 @@ def build_parser() -> argparse.ArgumentParser:
     steady_command.add_argument("--json", action="store_true",
                                 help="print the verdict and every metric's figures as JSON (SI)")
     steady_command.set_defaults(func=_steady)
+
+    start = commands.add_parser(
+        "steady-start",
+        help="write an estimate of the steady weld (the mass balance's deposit, a moving-"
+             "section temperature) into the time-0 fields of a meshed, set case",
+    )
+    start.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
+    start.add_argument("--json", action="store_true", help="print the estimate's figures as JSON")
+    start.set_defaults(func=_steady_start)
 
     post.add_argument("--json", action="store_true",
                       help="print the bead figures as one JSON object (mm, mm2, K, deg) "

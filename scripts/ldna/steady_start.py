@@ -1,0 +1,317 @@
+"""A start near the steady state (``ldna steady-start``).
+
+From a flat substrate the template's bead takes seconds of welding to become
+steady: the deposit must travel to the section and the substrate must warm
+up.  This writes instead, into the time-0 fields of a meshed case, an
+estimate of the steady weld in the moving frame:
+
+- the deposit: the mass balance's section A = m_dot / (rho v) as a circular
+  cap across the weld, laid from the wires on (half of it behind the first
+  wire, all of it behind the second: each brings half the metal), as wide
+  as the laser's sweep, 2 (oscillation amplitude + beam radius), where the
+  laser wets the clad out to;
+- its temperature: each transverse section of the moving substrate is a
+  moment of one 2D transient, t = (x - x_wire) / v (heat conduction along
+  the weld neglected: the Peclet number v L / alpha is about 15 over the
+  pool's length).  The section's metal, substrate and deposit, conducts
+  heat with the metal's k(T) and enthalpy h(T) (latent heat included), the
+  deposit arrives at the droplets' temperature, the laser's absorbed power
+  (absorptivity x power, its Gaussian profile averaged over the sinusoidal
+  sweep) heats the top of the metal as the section passes under the beam,
+  and the section's sides and bottom are adiabatic.  Gas stays at the
+  ambient temperature; the metal moves at the welding speed.
+
+The metal's properties are the solver's own table (metal.dat), written by a
+run of the solver to time 0.  The estimate is a starting point, not a
+result: the run from it computes the weld; ``ldna steady`` says when it is
+steady.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import post
+from .case import Case
+from .material import Metal
+
+#: Grid spacing of the transverse 2D march [m]: a third of a level-0 cell
+GRID = 0.15e-3
+#: Stability share of the explicit step's limit h^2 rho cp / (4 k)
+STEP_SAFETY = 0.8
+#: Sub-points per cell and direction that sample the deposit's volume fraction
+SAMPLES = 4
+#: Metal fraction below which a cell is gas (at the ambient temperature)
+GAS_ALPHA = 1e-3
+PARAMETERS = "system/caseParameters"
+OPTIONS = "constant/fvOptions"
+
+
+@dataclass(frozen=True)
+class Process:
+    """What the estimate needs from the case [SI]."""
+
+    speed: float
+    ambient: float
+    droplet_temperature: float
+    first_wire: float
+    second_wire: float
+    laser_x: float
+    absorbed_power: float
+    beam_radius: float
+    amplitude: float
+    bead_area: float
+    width: float
+    substrate_depth: float
+    length: float
+
+    @classmethod
+    def of(cls, case: Case) -> "Process":
+        mm = 1e-3
+        mid = mm * case.scalar(PARAMETERS, "processPosition")
+        spacing = mm * case.scalar(PARAMETERS, "wireSpacing")
+        absorptivity = case.value(OPTIONS, "laser/absorptivity").split()
+        if absorptivity[0] != "constant":
+            raise ValueError("ldna steady-start: the laser's absorptivity must be "
+                             f"'constant a', not '{' '.join(absorptivity)}'")
+        return cls(
+            speed=case.scalar(PARAMETERS, "weldingSpeed"),
+            ambient=case.scalar(PARAMETERS, "ambientTemperature"),
+            droplet_temperature=case.scalar(PARAMETERS, "dropletTemperature"),
+            first_wire=mid - spacing / 2, second_wire=mid + spacing / 2,
+            laser_x=mm * (case.scalar(PARAMETERS, "processPosition")
+                          + case.scalar(PARAMETERS, "laserOffset")),
+            absorbed_power=float(absorptivity[1]) * case.scalar(PARAMETERS, "laserPower"),
+            beam_radius=case.scalar(PARAMETERS, "laserBeamRadius"),
+            amplitude=case.scalar(PARAMETERS, "oscillationAmplitude"),
+            bead_area=post.expected_bead_area(case),
+            width=mm * case.scalar(PARAMETERS, "width"),
+            substrate_depth=mm * case.scalar(PARAMETERS, "substrateDepth"),
+            length=mm * case.scalar(PARAMETERS, "length"),
+        )
+
+
+def cap_height(area: float, half_width: float) -> float:
+    """Height of the circular cap of chord 2 b and area A (bisection on the
+    cap's angle: the area grows with it from 0 to the half-disc's).  A cap
+    beyond the half disc would overhang its chord: the deposit would be
+    wider than the laser's sweep."""
+    if not 0 < area <= 0.5 * math.pi * half_width**2:
+        raise ValueError(f"ldna steady-start: a bead section of {1e6 * area:.3g} mm2 is no "
+                         f"circular cap on a width of {2e3 * half_width:.3g} mm (at most the "
+                         f"half disc, {0.5e6 * math.pi * half_width**2:.3g} mm2)")
+    low, high = 1e-9, 0.5 * math.pi
+    for _ in range(200):
+        theta = 0.5 * (low + high)            # half the cap's central angle
+        radius = half_width / math.sin(theta)
+        if radius**2 * (theta - math.sin(theta) * math.cos(theta)) < area:
+            low = theta
+        else:
+            high = theta
+    return radius * (1 - math.cos(theta))
+
+
+def cap_top(y: np.ndarray, area: float, half_width: float) -> np.ndarray:
+    """Height of the cap's surface above the substrate at y (0 outside)."""
+    height = cap_height(area, half_width)
+    radius = (half_width**2 + height**2) / (2 * height)
+    top = np.sqrt(np.clip(radius**2 - y**2, 0, None)) - (radius - height)
+    return np.where(np.abs(y) < half_width, np.clip(top, 0, None), 0.0)
+
+
+def deposit_share(x: np.ndarray, process: Process) -> np.ndarray:
+    """Share of the mass balance's section laid at x: half behind each wire."""
+    return 0.5 * (x >= process.first_wire) + 0.5 * (x >= process.second_wire)
+
+
+def sweep_profile(y: np.ndarray, process: Process) -> np.ndarray:
+    """The laser's absorbed power across the weld per unit width [1/m], averaged
+    over the sinusoidal sweep: the beam's marginal profile exp(-3 y^2/R^2)
+    (integral 1) at y_c = a sin(phase), phases uniform."""
+    phases = np.linspace(0, 2 * np.pi, 721)[:-1]
+    centres = process.amplitude * np.sin(phases)
+    r = process.beam_radius
+    profile = math.sqrt(3 / math.pi) / r * np.exp(-3 * (y[:, None] - centres[None, :])**2 / r**2)
+    return profile.mean(axis=1)
+
+
+def beam_profile_along(x: np.ndarray, process: Process) -> np.ndarray:
+    """The beam's marginal profile along the weld [1/m] about its target."""
+    r = process.beam_radius
+    return math.sqrt(3 / math.pi) / r * np.exp(-3 * (x - process.laser_x)**2 / r**2)
+
+
+class TransverseMarch:
+    """The 2D transient of one transverse section carried by the substrate."""
+
+    def __init__(self, process: Process, metal: Metal) -> None:
+        self.process = process
+        table = metal.table
+        self.T_table = np.asarray(table["T"], dtype=float)
+        self.h_table = np.asarray(table["enthalpy"], dtype=float)
+        self.k_table = np.asarray(table["kappa"], dtype=float)
+        self.density = metal.reference_density
+        half = process.width / 2
+        self.y = np.arange(-half + GRID / 2, half, GRID)
+        top = cap_height(process.bead_area, process.amplitude + process.beam_radius)
+        self.z = np.arange(-process.substrate_depth + GRID / 2, top + GRID, GRID)
+        Y, Z = np.meshgrid(self.y, self.z, indexing="ij")
+        self.cap = cap_top(self.y, process.bead_area, process.amplitude + process.beam_radius)
+        self.in_cap = (Z >= 0) & (Z < self.cap[:, None])
+        self.substrate = Z < 0
+
+    def temperature(self, h: np.ndarray) -> np.ndarray:
+        return np.interp(h, self.h_table, self.T_table)
+
+    def run(self, x_end: float) -> tuple[np.ndarray, list[np.ndarray]]:
+        """Positions along the weld [m] and the section's temperatures there,
+        from the first wire to ``x_end``."""
+        p = self.process
+        h_ambient = float(np.interp(p.ambient, self.T_table, self.h_table))
+        h_droplet = float(np.interp(p.droplet_temperature, self.T_table, self.h_table))
+        h = np.full(self.in_cap.shape, h_ambient)
+        metal = self.substrate.copy()
+        k_max = float(self.k_table[self.T_table <= 2 * p.droplet_temperature].max())
+        cp_min = float(np.min(np.diff(self.h_table) / np.diff(self.T_table)))
+        dt = STEP_SAFETY * GRID**2 * self.density * cp_min / (4 * k_max)
+        across = sweep_profile(self.y, p)
+        x = p.first_wire
+        positions, fields = [], []
+        share = 0.0
+        next_snapshot = x
+        while x <= x_end:
+            # The deposit grows in two steps: its cap scaled in height
+            new_share = float(deposit_share(np.array([x]), p)[0])
+            if new_share > share:
+                grown = (self.in_cap_at(new_share)) & ~metal
+                h[grown] = h_droplet
+                metal |= grown
+                share = new_share
+            T = self.temperature(h)
+            top = metal.shape[1] - 1 - np.argmax(metal[:, ::-1], axis=1)
+            if x >= next_snapshot:
+                # A snapshot every grid spacing of travel; above the metal each
+                # column continues at its surface temperature, so that a cell
+                # the surface cuts gets the metal's
+                snapshot = T.copy()
+                above = np.arange(metal.shape[1])[None, :] > top[:, None]
+                snapshot[above] = np.broadcast_to(T[np.arange(len(top)), top][:, None],
+                                                  T.shape)[above]
+                positions.append(x)
+                fields.append(snapshot)
+                next_snapshot = x + GRID
+            # Conduction between metal neighbours, harmonic face conductivity
+            k = np.interp(T, self.T_table, self.k_table)
+            flux = np.zeros_like(h)
+            for axis in (0, 1):
+                both = np.logical_and(np.take(metal, range(1, metal.shape[axis]), axis=axis),
+                                      np.take(metal, range(0, metal.shape[axis] - 1), axis=axis))
+                k1 = np.take(k, range(1, k.shape[axis]), axis=axis)
+                k0 = np.take(k, range(0, k.shape[axis] - 1), axis=axis)
+                face_k = 2 * k1 * k0 / (k1 + k0)
+                dT = np.diff(T, axis=axis)
+                q = np.where(both, face_k * dT / GRID**2, 0.0)
+                if axis == 0:
+                    flux[:-1, :] += q
+                    flux[1:, :] -= q
+                else:
+                    flux[:, :-1] += q
+                    flux[:, 1:] -= q
+            # The laser on the top metal node of each column
+            power = p.absorbed_power * float(beam_profile_along(np.array([x]), p)[0])
+            heating = np.zeros_like(h)
+            heating[np.arange(len(self.y)), top] = power * across / GRID
+            h = h + dt * (flux + heating * metal) / self.density
+            x += p.speed * dt
+        return np.array(positions), fields
+
+    def in_cap_at(self, share: float) -> np.ndarray:
+        """The deposit's nodes when ``share`` of the section is laid (the cap's
+        height scaled)."""
+        Z = self.z[None, :]
+        return (Z >= 0) & (Z < share * self.cap[:, None])
+
+
+def write_estimate(case: Case) -> dict[str, float]:
+    """Write the estimate into the case's time-0 T, alpha.metal and U (the case
+    must be meshed and set; the solver's metal table is made first)."""
+    case = Case(case)
+    process = Process.of(case)
+    make_metal_table(case)
+    metal = Metal.from_case(case.path)
+    march = TransverseMarch(process, metal)
+    positions, fields = march.run(process.length)
+
+    case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+    centres = case.field("C", "0")
+    x, y, z = centres.T
+    alpha = case.field("alpha.metal", "0")
+    deposit = deposit_fraction(case, process, centres)
+    alpha = np.clip(np.maximum(alpha, deposit), 0.0, 1.0)
+    # The section that passed x, in the march: bilinear in (y, z)
+    index = np.clip(np.searchsorted(positions, x) - 1, 0, len(positions) - 1)
+    T = np.full(len(x), process.ambient)
+    behind = x >= process.first_wire
+    for k in np.unique(index[behind]):
+        cells = behind & (index == k)
+        T[cells] = bilinear(march.y, march.z, fields[k], y[cells], z[cells])
+    # Gas at the ambient temperature; cells the surface cuts, the metal's
+    T = np.where(alpha > GAS_ALPHA, T, process.ambient)
+    velocity = np.zeros_like(centres)
+    velocity[:, 0] = process.speed * (alpha >= 0.5)
+    case.write_field("T", values=T)
+    case.write_field("alpha.metal", values=alpha)
+    case.write_field("U", values=velocity)
+    return {"bead_area_mm2": 1e6 * process.bead_area,
+            "bead_width_mm": 2e3 * (process.amplitude + process.beam_radius),
+            "bead_height_mm": 1e3 * cap_height(process.bead_area,
+                                               process.amplitude + process.beam_radius),
+            "peak_substrate_temperature_K": float(max(f[march.substrate].max() for f in fields))}
+
+
+def bilinear(y: np.ndarray, z: np.ndarray, values: np.ndarray, yq: np.ndarray,
+             zq: np.ndarray) -> np.ndarray:
+    """Bilinear interpolation on the grid (y, z), clamped at its edges."""
+    i = np.clip(np.searchsorted(y, yq) - 1, 0, len(y) - 2)
+    j = np.clip(np.searchsorted(z, zq) - 1, 0, len(z) - 2)
+    s = np.clip((yq - y[i]) / (y[i + 1] - y[i]), 0, 1)
+    t = np.clip((zq - z[j]) / (z[j + 1] - z[j]), 0, 1)
+    return ((1 - s) * (1 - t) * values[i, j] + s * (1 - t) * values[i + 1, j]
+            + (1 - s) * t * values[i, j + 1] + s * t * values[i + 1, j + 1])
+
+
+def deposit_fraction(case: Case, process: Process, centres: np.ndarray) -> np.ndarray:
+    """The deposit's volume fraction in each cell, sampled on SAMPLES^3 points
+    of a cube of the cell's volume about its centre (the template's cells are
+    cubes and boxes)."""
+    case.run("postProcess -func writeCellVolumes -time 0", log_name="writeCellVolumes")
+    side = np.cbrt(case.field("V", "0"))[:, None]
+    offsets = (np.arange(SAMPLES) + 0.5) / SAMPLES - 0.5
+    fraction = np.zeros(len(centres))
+    half_width = process.amplitude + process.beam_radius
+    for ox in offsets:
+        for oy in offsets:
+            for oz in offsets:
+                sample = centres + side * np.array([ox, oy, oz])
+                top = (deposit_share(sample[:, 0], process)
+                       * cap_top(sample[:, 1], process.bead_area, half_width))
+                fraction += (sample[:, 2] >= 0) & (sample[:, 2] < top)
+    return fraction / SAMPLES**3
+
+
+def make_metal_table(case: Case) -> None:
+    """The solver's metal table, from a run of the solver to time 0."""
+    control = case / "system" / "controlDict"
+    text = control.read_text()
+    end = re.search(r"^endTime\s+([^;]+);", text, re.M)
+    if end is None:
+        raise KeyError(f"no endTime in {control}")
+    case.set("system/controlDict", "endTime", "0")
+    try:
+        case.run("ldnaFoam", log_name="ldnaFoam.metalTable")
+    finally:
+        case.set("system/controlDict", "endTime", end.group(1).strip())

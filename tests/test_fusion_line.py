@@ -142,13 +142,18 @@ def test_fusion_zone_below_the_cell_size(level0_mesh: Case, depth: float,
     assert line[:, 1].max() == pytest.approx(result.penetration, rel=1e-9)
 
 
-def test_a_substrate_that_did_not_melt_is_lack_of_fusion(level0_mesh: Case) -> None:
-    """The isotherm 0.1 mm above the surface everywhere: nothing fused, the
-    whole bead unbonded."""
+@pytest.mark.parametrize("hot_half_width", [None, 5e-3])
+def test_a_substrate_that_did_not_melt_is_lack_of_fusion(level0_mesh: Case,
+                                                         hot_half_width: float | None) -> None:
+    """The isotherm 0.1 mm above the surface, everywhere or only within 5 mm of
+    the seam (cold beyond: columns without any crossing beside unfused ones):
+    nothing fused, the whole bead unbonded."""
     case = level0_mesh
     x, y, z = case.field("C", "0").T
     above = 0.1e-3
     temperature = np.clip(fusion_temperature(case) + GRADIENT * (z - above), *FIELD_RANGE)
+    if hot_half_width is not None:
+        temperature = np.where(np.abs(y) < hot_half_width, temperature, FIELD_RANGE[0])
     in_bead = (z >= 0) & ((y / BEAD_HALF_WIDTH) ** 2 + (z / BEAD_HEIGHT) ** 2 < 1)
     case.write_field("T", time="0", values=temperature)
     case.write_field("alpha.metal", time="0", values=np.where((z < 0) | in_bead, 1.0, 0.0))

@@ -326,13 +326,31 @@ def _bead_arrival_time(case: Case, section: float) -> float:
     return (section - midpoint) / welding_speed(case)
 
 
-def bead_not_yet_there(arrival: float | None, time: float, section: float) -> str | None:
-    """What to tell a user whose run ended before the bead reached its section, else None."""
+#: The record of ``ldna steady-start`` that a case's time-0 fields are its
+#: estimate: postProcessing/<name>/0/<file>.dat
+STEADY_START_RECORD = ("steadyStart", "estimate")
+
+
+def started_from_estimate(case: Case | Path) -> bool:
+    """Whether the case's time-0 fields are the estimate of ``ldna steady-start``."""
+    name, file = STEADY_START_RECORD
+    return (Path(case) / "postProcessing" / name / "0" / f"{file}.dat").exists()
+
+
+def bead_not_yet_there(arrival: float | None, time: float, section: float,
+                       estimate: bool = False) -> str | None:
+    """What to tell a user whose run ended before the bead reached its section, else None.
+
+    ``estimate``: the run started from ``ldna steady-start``'s estimate, whose
+    deposit the section holds until the computed one arrives.
+    """
     if arrival is None or time >= arrival:
         return None
+    holds = ("the estimate of the start (ldna steady-start), not a computed bead"
+             if estimate else "the substrate")
     return (f"The bead has not reached the section x = {1e3 * section:.2f} mm yet: its start "
             f"arrives there after about {arrival:.2g} s of welding and this run ends at "
-            f"{time:.3g} s.  The section metrics above are of the substrate; for the bead run "
+            f"{time:.3g} s.  The section metrics above are of {holds}; for the bead run "
             f"longer (bin/ldna-scene --end-time {max(2.0, round(arrival + 1.0)):g}, or endTime "
             "in system/controlDict).")
 
@@ -364,6 +382,7 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "bead_section_mm": 1e3 * result.bead_section,
         "peak_metal_temperature_K": result.peak_temperature,
         "bead_arrival_s": bead_arrival_time(case, result.bead_section),
+        "steady_start": started_from_estimate(case),
     }
 
 
@@ -488,7 +507,7 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
 
     temperature = np.asarray(grid.cell_data["T"])
     temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))
-    x_section = result.fused_section if result.fused_area > 0 else result.bead_section
+    x_section = result.fused_section if result.penetration > 0 else result.bead_section
     centre = grid.center
     time_label = f"t = {grid.field_data['time'][0]:.4g} s"
     pictures = [

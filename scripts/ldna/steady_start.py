@@ -29,7 +29,8 @@ steady.
 from __future__ import annotations
 
 import math
-import re
+import shutil
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -238,11 +239,10 @@ class TransverseMarch:
 
 def write_estimate(case: Case) -> dict[str, float]:
     """Write the estimate into the case's time-0 T, alpha.metal and U (the case
-    must be meshed and set; the solver's metal table is made first)."""
+    must be meshed and set)."""
     case = Case(case)
     process = Process.of(case)
-    make_metal_table(case)
-    metal = Metal.from_case(case.path)
+    metal = solver_metal(case)
     march = TransverseMarch(process, metal)
     positions, fields = march.run(process.length)
 
@@ -266,11 +266,29 @@ def write_estimate(case: Case) -> dict[str, float]:
     case.write_field("T", values=T)
     case.write_field("alpha.metal", values=alpha)
     case.write_field("U", values=velocity)
-    return {"bead_area_mm2": 1e6 * process.bead_area,
-            "bead_width_mm": 2e3 * (process.amplitude + process.beam_radius),
-            "bead_height_mm": 1e3 * cap_height(process.bead_area,
-                                               process.amplitude + process.beam_radius),
-            "peak_substrate_temperature_K": float(max(f[march.substrate].max() for f in fields))}
+    # The geometry fields were only for this
+    for name in ("C", "Cx", "Cy", "Cz", "V"):
+        (case / "0" / name).unlink(missing_ok=True)
+    figures = {"bead_area_mm2": 1e6 * process.bead_area,
+               "bead_width_mm": 2e3 * (process.amplitude + process.beam_radius),
+               "bead_height_mm": 1e3 * cap_height(process.bead_area,
+                                                  process.amplitude + process.beam_radius),
+               "peak_substrate_temperature_K":
+                   float(max(f[march.substrate].max() for f in fields))}
+    write_record(case, figures)
+    return figures
+
+
+def write_record(case: Case, figures: dict[str, float]) -> None:
+    """The estimate's figures as a table, so that the tools know what the
+    time-0 fields hold (``post.started_from_estimate``)."""
+    name, file = post.STEADY_START_RECORD
+    directory = case / "postProcessing" / name / "0"
+    directory.mkdir(parents=True, exist_ok=True)
+    (directory / f"{file}.dat").write_text(
+        "# Estimate of the steady weld written into the time-0 fields (ldna steady-start)\n"
+        "# Time " + " ".join(figures) + "\n"
+        "0 " + " ".join(f"{value:.9g}" for value in figures.values()) + "\n")
 
 
 def bilinear(y: np.ndarray, z: np.ndarray, values: np.ndarray, yq: np.ndarray,
@@ -303,15 +321,15 @@ def deposit_fraction(case: Case, process: Process, centres: np.ndarray) -> np.nd
     return fraction / SAMPLES**3
 
 
-def make_metal_table(case: Case) -> None:
-    """The solver's metal table, from a run of the solver to time 0."""
-    control = case / "system" / "controlDict"
-    text = control.read_text()
-    end = re.search(r"^endTime\s+([^;]+);", text, re.M)
-    if end is None:
-        raise KeyError(f"no endTime in {control}")
-    case.set("system/controlDict", "endTime", "0")
-    try:
-        case.run("ldnaFoam", log_name="ldnaFoam.metalTable")
-    finally:
-        case.set("system/controlDict", "endTime", end.group(1).strip())
+def solver_metal(case: Case) -> Metal:
+    """The case's metal with the solver's own property table, from a run of
+    the solver to time 0 in a scratch copy (the case's postProcessing stays
+    as it was)."""
+    with tempfile.TemporaryDirectory() as scratch:
+        copy = Case.copy_of(case, Path(scratch) / "case")
+        shutil.copytree(case / "constant" / "polyMesh", copy / "constant" / "polyMesh")
+        copy.set("system/controlDict", "endTime", "0")
+        copy.run("ldnaFoam", log_name="ldnaFoam")
+        metal = Metal.from_case(copy.path)
+        metal.table  # read before the scratch copy goes
+    return metal

@@ -82,8 +82,9 @@ namespace
 {
 
 //- Depth of a slice's fusion line at t: linear between its columns; against
-//  a column without a crossing, the mirror of its neighbour (the edge
-//  half-way); -GREAT outside the slice or between columns without depth
+//  a column without a crossing, the mirror of a fused neighbour (the edge
+//  half-way) or an unfused neighbour's depth; -GREAT outside the slice or
+//  between columns without depth
 Foam::scalar lineDepth
 (
     const Foam::scalarList& position,
@@ -110,13 +111,15 @@ Foam::scalar lineDepth
     {
         return -GREAT;
     }
+    // Beside a column without a crossing: the fused column's edge half-way,
+    // an unfused column's line unfused
     if (!has0)
     {
-        e0 = -e1;
+        e0 = e1 > 0 ? -e1 : e1;
     }
     if (!has1)
     {
-        e1 = -e0;
+        e1 = e0 > 0 ? -e0 : e0;
     }
     const scalar s = (t - position[k])/(position[k + 1] - position[k]);
     return (1 - s)*e0 + s*e1;

@@ -78,22 +78,13 @@ void Foam::fusionLine::addLink
 }
 
 
-namespace
-{
-
-//- Depth of a slice's fusion line at t: linear between its columns; against
-//  a column without a crossing, the mirror of a fused neighbour (the edge
-//  half-way) or an unfused neighbour's depth; -GREAT outside the slice or
-//  between columns without depth
-Foam::scalar lineDepth
+Foam::scalar Foam::fusionLine::lineDepth
 (
-    const Foam::scalarList& position,
-    const Foam::scalarList& depth,
-    const Foam::scalar t
+    const scalarList& position,
+    const scalarList& depth,
+    const scalar t
 )
 {
-    using namespace Foam;
-
     if (position.size() < 2 || t < position.first() || t > position.last())
     {
         return -GREAT;
@@ -105,27 +96,23 @@ Foam::scalar lineDepth
     );
     scalar e0 = depth[k];
     scalar e1 = depth[k + 1];
-    const bool has0 = e0 > -0.5*GREAT;
-    const bool has1 = e1 > -0.5*GREAT;
-    if (!has0 && !has1)
+    if (!crossed(e0) && !crossed(e1))
     {
         return -GREAT;
     }
     // Beside a column without a crossing: the fused column's edge half-way,
     // an unfused column's line unfused
-    if (!has0)
+    if (!crossed(e0))
     {
         e0 = e1 > 0 ? -e1 : e1;
     }
-    if (!has1)
+    if (!crossed(e1))
     {
         e1 = e0 > 0 ? -e0 : e0;
     }
     const scalar s = (t - position[k])/(position[k + 1] - position[k]);
     return (1 - s)*e0 + s*e1;
 }
-
-} // End anonymous namespace
 
 
 void Foam::fusionLine::collectSlices

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from ldna.case import Case
-from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, averaging_window, judge,
-                         ripple_period, window_mean)
+from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, averaging_window,
+                         first_steady, judge, ripple_period, window_mean)
 
 #: A bead of mean section 35 mm2 whose area swings by 10 % with a period
 #: longer than the shortest window (as the template's bead: 0.6-0.7 s)
@@ -87,6 +87,26 @@ def test_any_growing_metric_is_not_steady(metric: str) -> None:
     verdict = judge(*bead(4.0, growing=metric))
     assert not verdict.steady
     assert verdict.reason == f"still changing: {metric}"
+
+
+@pytest.mark.unit
+def test_the_first_steady_time() -> None:
+    """A bead that grows linearly until G = 1.5 s, then ripples about its mean:
+    first judged steady once the window before the last holds so little of
+    the growth that its mean is within 1 % of the full one: the deficit
+    (G - t + 2 W)^2 / (2 G W) <= 1 % gives t >= G + 2 W - sqrt(0.02 G W);
+    no later than a third window (the ripple's residue in the means, the
+    judging interval); a bead still growing at the end: never."""
+    growth_end = 1.5
+    times, table = bead(4.0)
+    growth = np.clip(times / growth_end, 0, 1)
+    grown = {name: values * growth for name, values in table.items()}
+    first = first_steady(times, grown)
+    earliest = growth_end + 2 * PERIOD - np.sqrt(2 * RELATIVE_TOLERANCE * growth_end * PERIOD)
+    print(f"first steady at {first} s, earliest by the criterion {earliest:.3f} s")
+    # The ripple's residue in a window mean: +-0.1 s of its phase here
+    assert first is not None and earliest - 0.1 <= first <= growth_end + 3 * PERIOD
+    assert first_steady(*bead(4.0, growing="bead_width")) is None
 
 
 @pytest.mark.unit

@@ -77,11 +77,15 @@ def _accuracy(args: argparse.Namespace) -> int:
 def _steady(args: argparse.Namespace) -> int:
     from . import steady
 
-    verdict = steady.case_steadiness(Path(args.case), args.section)
+    times, table, arrival = steady.case_table(Path(args.case), args.section)
+    verdict = steady.judge(times, table, arrival)
+    first = steady.first_steady(times, table, arrival)
     if args.json:
-        print(json.dumps(verdict.as_dict()))
+        print(json.dumps({**verdict.as_dict(), "first_steady_s": first}))
     else:
         print(steady.format_steadiness(verdict))
+        print("first judged quasi-steady at " + (f"t = {first:.4g} s" if first is not None
+                                                 else "no time yet"))
     return 0
 
 

@@ -150,16 +150,43 @@ def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None =
     return Steadiness(verdict, reason, end, window, metrics)
 
 
+#: Spacing of the end times at which ``first_steady`` judges a run [s]
+JUDGING_INTERVAL = 0.05
+
+
+def first_steady(times: np.ndarray, table: dict[str, np.ndarray], start: float | None = None,
+                 min_window: float = MIN_WINDOW) -> float | None:
+    """The first end time, every JUDGING_INTERVAL, at which the run up to it is
+    judged quasi-steady (the time a run needed); None if never."""
+    first = float(times[0]) if start is None else max(float(start), float(times[0]))
+    for end in np.arange(first + 2 * min_window, float(times[-1]) + 1e-12, JUDGING_INTERVAL):
+        upto = times <= end
+        if upto.sum() > 2 and judge(times[upto], {n: v[upto] for n, v in table.items()},
+                                    start, min_window).steady:
+            return float(times[upto][-1])
+    return None
+
+
+def case_table(case: Path, section: str = "meltPoolMetrics"
+               ) -> tuple[np.ndarray, dict[str, np.ndarray], float | None]:
+    """Times, the judged metrics and the bead's arrival at the section [s] of
+    the function object ``section`` of ``case``."""
+    rows = post.read_function_object_metrics(case, section)
+    # A restart's table repeats the rows after its start time: keep the last
+    _, last = np.unique(rows[::-1, 0], return_index=True)
+    rows = rows[::-1][last]
+    columns = post.BeadMetrics.FUNCTION_OBJECT_COLUMNS
+    table = {name: rows[:, 1 + columns.index(name)] for name in METRICS}
+    section_x = rows[-1, 1 + columns.index("bead_section")]
+    return rows[:, 0], table, post.bead_arrival_time(case, section_x)
+
+
 def case_steadiness(case: Path, section: str = "meltPoolMetrics",
                     min_window: float = MIN_WINDOW) -> Steadiness:
     """Judge the metrics that the function object ``section`` of ``case`` wrote,
     from the bead's arrival at its section on."""
-    rows = post.read_function_object_metrics(case, section)
-    columns = post.BeadMetrics.FUNCTION_OBJECT_COLUMNS
-    table = {name: rows[:, 1 + columns.index(name)] for name in METRICS}
-    times = rows[:, 0]
-    section_x = rows[-1, 1 + columns.index("bead_section")]
-    return judge(times, table, post.bead_arrival_time(case, section_x), min_window)
+    times, table, arrival = case_table(case, section)
+    return judge(times, table, arrival, min_window)
 
 
 def format_steadiness(verdict: Steadiness) -> str:

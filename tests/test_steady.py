@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from ldna.case import Case
-from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, averaging_window,
+from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, SCALES, averaging_window,
                          first_steady, judge, ripple_period, window_mean)
 
 #: A bead of mean section 35 mm2 whose area swings by 10 % with a period
@@ -18,8 +18,7 @@ from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, averaging_wind
 MEAN_AREA = 35e-6
 RIPPLE = 3.5e-6
 PERIOD = 0.65
-#: The other metrics of the synthetic bead: means [SI], rippling with the area;
-#: large enough that 1.6 % of them exceeds their absolute floors
+#: The other metrics of the synthetic bead: means [SI], rippling with the area
 MEANS = {"bead_area": MEAN_AREA, "bead_width": 15e-3, "bead_height": 3e-3,
          "bonded_width": 10e-3, "penetration": 0.3e-3, "fused_area": 3e-6, "dilution": 0.08,
          "pool_length": 15e-3, "pool_width": 11e-3}
@@ -83,10 +82,23 @@ def test_a_steady_ripple_passes() -> None:
 @pytest.mark.unit
 @pytest.mark.parametrize("metric", METRICS)
 def test_any_growing_metric_is_not_steady(metric: str) -> None:
-    """2.5 % a second: the two windows' means differ by about 1.6 %."""
-    verdict = judge(*bead(4.0, growing=metric))
+    """Growing by 1.6 % of the bead's size in that direction per window
+    (2.5 % a second of the metric for the bead's own sizes)."""
+    scale = MEANS[SCALES[metric]] if SCALES[metric] else 1.0
+    trend = 0.025 * max(scale, MEANS[metric]) / MEANS[metric]
+    verdict = judge(*bead(4.0, growing=metric, trend=trend))
     assert not verdict.steady
     assert verdict.reason == f"still changing: {metric}"
+
+
+@pytest.mark.unit
+def test_a_small_metric_is_read_to_the_beads_size() -> None:
+    """A 0.3 mm penetration drifting by 5 um a window (1.6 % of itself, 0.17 %
+    of the 3 mm bead): as steady as a macro-section reads."""
+    verdict = judge(*bead(4.0, growing="penetration"))
+    assert verdict.steady, verdict.reason
+    assert verdict.metrics["penetration"].tolerance == pytest.approx(
+        RELATIVE_TOLERANCE * verdict.metrics["bead_height"].mean)
 
 
 @pytest.mark.unit

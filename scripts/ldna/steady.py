@@ -6,9 +6,10 @@ the section's area swings by about 10 % with a period of 0.6-0.7 s), so each
 metric is judged on its time-weighted mean over a window of whole ripple
 periods: quasi-steady when the means over the last window and over the
 window before agree, for every metric, within ``RELATIVE_TOLERANCE`` of the
-last mean or the metric's absolute floor (``ABSOLUTE_FLOORS``: a metric
-that is zero, such as the penetration of a clad that did not fuse, is
-steady at zero).  The window is the bead area's ripple period, measured from
+last mean or of the bead's own size in that direction (``SCALES``: the
+penetration against the bead's height, the bonded width against its width,
+the fused area against its area; a metric that is zero, such as the
+penetration of a clad that did not fuse, is steady at zero).  The window is the bead area's ripple period, measured from
 its upward crossings of its mean, times the whole number that reaches
 ``MIN_WINDOW``; without a ripple, ``MIN_WINDOW``.  Two windows must lie
 after the bead reached the section (``start``), and the section must hold
@@ -30,25 +31,27 @@ from . import post
 
 #: Shortest averaging window [s]: the template's ripple period is 0.56-0.7 s
 MIN_WINDOW = 0.5
-#: Two consecutive window means agree within this share of the last one
+#: Two consecutive window means agree within this share of the last one, or
+#: of the macro-section's own size in that direction (``SCALES``): a metric
+#: far smaller than the bead (a thin bond's penetration, a sporadic fusion
+#: spot) is read to 1 % of the bead, as a macro-section is
 RELATIVE_TOLERANCE = 0.01
-#: ... or within these absolute floors (SI units): a twentieth of the thinnest
-#: bond a low-dilution clad aims at (0.05 mm) for lengths; for areas the
-#: same length times a millimetre; a thousandth for the dilution
-LENGTH_FLOOR = 2.5e-6
-ABSOLUTE_FLOORS = {
-    "bead_area": LENGTH_FLOOR * 1e-3,
-    "bead_width": LENGTH_FLOOR,
-    "bead_height": LENGTH_FLOOR,
-    "bonded_width": LENGTH_FLOOR,
-    "penetration": LENGTH_FLOOR,
-    "fused_area": LENGTH_FLOOR * 1e-3,
-    "dilution": 1e-3,
-    "pool_length": LENGTH_FLOOR,
-    "pool_width": LENGTH_FLOOR,
+#: The bead's size each metric is read against: its width across the weld,
+#: its height, its area; the dilution against 1 (the fused area against the
+#: bead's area)
+SCALES = {
+    "bead_area": "bead_area",
+    "bead_width": "bead_width",
+    "bead_height": "bead_height",
+    "bonded_width": "bead_width",
+    "penetration": "bead_height",
+    "fused_area": "bead_area",
+    "dilution": None,
+    "pool_length": "bead_width",
+    "pool_width": "bead_width",
 }
 #: The metrics judged (columns of meltPoolMetrics.dat)
-METRICS = tuple(ABSOLUTE_FLOORS)
+METRICS = tuple(SCALES)
 
 
 def window_mean(times: np.ndarray, values: np.ndarray, start: float, end: float) -> float:
@@ -127,16 +130,18 @@ def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None =
     start = float(times[0]) if start is None else max(float(start), float(times[0]))
     window = averaging_window(times, table["bead_area"], start, min_window)
     end = float(times[-1])
+    means = {name: (window_mean(times, table[name], end - window, end),
+                    window_mean(times, table[name], end - 2 * window, end - window))
+             for name in METRICS}
     metrics = {}
     for name in METRICS:
-        values = table[name]
-        last = window_mean(times, values, end - window, end)
-        previous = window_mean(times, values, end - 2 * window, end - window)
+        last, previous = means[name]
+        scale = 1.0 if SCALES[name] is None else abs(means[SCALES[name]][0])
         in_last = times >= end - window
         metrics[name] = MetricSteadiness(
             mean=last, previous_mean=previous, change=abs(last - previous),
-            tolerance=max(RELATIVE_TOLERANCE * abs(last), ABSOLUTE_FLOORS[name]),
-            low=float(values[in_last].min()), high=float(values[in_last].max()))
+            tolerance=RELATIVE_TOLERANCE * max(abs(last), scale),
+            low=float(table[name][in_last].min()), high=float(table[name][in_last].max()))
     if end - start < 2 * window:
         verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival, "
                                   f"two windows of {window:.3g} s needed")

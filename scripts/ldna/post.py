@@ -462,6 +462,9 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
                          line_width=3, label="free surface")
     if fusion_lines or free_surface.n_points:
         plotter.add_legend(bcolor="grey", size=(0.25, 0.1), loc="lower left")
+    if outline is not None and not fusion_lines:
+        plotter.add_text("no fusion line: the substrate stayed below its solidus "
+                         "(lack of fusion)", position="lower_edge", color="black", font_size=10)
     plotter.add_text(title, color="black", font_size=12)
     plotter.screenshot(str(path))
     plotter.close()

@@ -124,6 +124,7 @@ def test_the_first_steady_time() -> None:
 @pytest.mark.unit
 def test_too_short_or_empty_is_not_steady() -> None:
     assert "too short" in judge(*bead(4.0), start=3.0).reason
+    assert "after this run's end" in judge(*bead(4.0), start=5.0).reason
     times, table = bead(4.0)
     table["bead_area"] = np.zeros_like(times)
     assert judge(times, table).reason == "no bead at the section"

@@ -142,7 +142,10 @@ def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None =
             mean=last, previous_mean=previous, change=abs(last - previous),
             tolerance=RELATIVE_TOLERANCE * max(abs(last), scale),
             low=float(table[name][in_last].min()), high=float(table[name][in_last].max()))
-    if end - start < 2 * window:
+    if end < start:
+        verdict, reason = False, (f"the bead deposited by the run reaches the section at "
+                                  f"{start:.3g} s, after this run's end")
+    elif end - start < 2 * window:
         verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival, "
                                   f"two windows of {window:.3g} s needed")
     elif not metrics["bead_area"].mean > 0:

@@ -178,3 +178,18 @@ def test_fusion_line_on_two_ranks(level0_mesh: Case, tmp_path: Path) -> None:
     for name, value in serial.as_dict().items():
         other = parallel.as_dict()[name]
         assert abs(value - other) <= AGREEMENT * max(abs(value), abs(other), 1e-12), name
+
+
+def test_hot_gas_over_a_solid_substrate_is_no_fusion(level0_mesh: Case) -> None:
+    """Metal everywhere 75 K below the solidus, the gas over it at 2500 K (as
+    beside a droplet): the isotherm lies in the gas, whose temperature is not
+    the surface's, so nothing fused."""
+    case = level0_mesh
+    x, y, z = case.field("C", "0").T
+    in_bead = (z >= 0) & ((y / BEAD_HALF_WIDTH) ** 2 + (z / BEAD_HEIGHT) ** 2 < 1)
+    alpha = np.where((z < 0) | in_bead, 1.0, 0.0)
+    temperature = np.where(alpha > 0.5, fusion_temperature(case) - 75.0, 2500.0)
+    case.write_field("T", time="0", values=temperature)
+    case.write_field("alpha.metal", time="0", values=alpha)
+    result = measure(case)
+    assert result.penetration == 0 and result.fused_area == 0 and result.bonded_width == 0

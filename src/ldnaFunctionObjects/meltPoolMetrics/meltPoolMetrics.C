@@ -251,7 +251,7 @@ Foam::functionObjects::meltPoolMetrics::calculate()
     }
 
     // The fusion line between cell centres
-    fusionLine_->update(T);
+    fusionLine_->update(T, alpha, metalThreshold_);
     m.penetration = fusionLine_->penetration();
     m.fusedArea = fusionLine_->area();
     m.fusedSection = fusionLine_->deepestSection();

@@ -40,6 +40,7 @@ void Foam::fusionLine::addLink
     const point& b,
     const scalar Ta,
     const scalar Tb,
+    const bool metal,
     DynamicList<vector>& records
 ) const
 {
@@ -65,8 +66,8 @@ void Foam::fusionLine::addLink
         records.append(vector(p & transverseDir_, -GREAT, p & weldDir_));
     }
 
-    // The isotherm, hot side up (the substrate is heated from above)
-    if (Thigh >= temperature_ && Tlow < temperature_)
+    // The isotherm in metal, hot side up (the substrate is heated from above)
+    if (metal && Thigh >= temperature_ && Tlow < temperature_)
     {
         const scalar lambda = (temperature_ - Tlow)/(Thigh - Tlow);
         const point p = low + lambda*(aBelow ? d : -d);
@@ -350,10 +351,16 @@ Foam::fusionLine::fusionLine
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fusionLine::update(const volScalarField& T)
+void Foam::fusionLine::update
+(
+    const volScalarField& T,
+    const volScalarField& alpha,
+    const scalar metalThreshold
+)
 {
     const vectorField& C = mesh_.C();
     const scalarField& Tc = T.primitiveField();
+    const scalarField& alphac = alpha.primitiveField();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
 
@@ -362,7 +369,9 @@ void Foam::fusionLine::update(const volScalarField& T)
     {
         const label a = own[facei];
         const label b = nei[facei];
-        addLink(C[a], C[b], Tc[a], Tc[b], records);
+        const bool metal =
+            alphac[a] >= metalThreshold && alphac[b] >= metalThreshold;
+        addLink(C[a], C[b], Tc[a], Tc[b], metal, records);
     }
 
     // Links across processor (and cyclic) faces, seen from both sides
@@ -370,8 +379,10 @@ void Foam::fusionLine::update(const volScalarField& T)
     const labelUList& boundaryCells = mesh_.faceOwner();
     pointField neighbourCentre;
     scalarField neighbourT;
+    scalarField neighbourAlpha;
     syncTools::swapBoundaryCellPositions(mesh_, C, neighbourCentre);
     syncTools::swapBoundaryCellList(mesh_, Tc, neighbourT);
+    syncTools::swapBoundaryCellList(mesh_, alphac, neighbourAlpha);
     for (const polyPatch& patch : mesh_.boundaryMesh())
     {
         if (!patch.coupled())
@@ -387,6 +398,8 @@ void Foam::fusionLine::update(const volScalarField& T)
             (
                 C[celli], neighbourCentre[bFacei],
                 Tc[celli], neighbourT[bFacei],
+                alphac[celli] >= metalThreshold
+             && neighbourAlpha[bFacei] >= metalThreshold,
                 records
             );
         }

@@ -160,7 +160,7 @@ class TransverseMarch:
         self.y = np.arange(-half + GRID / 2, half, GRID)
         top = cap_height(process.bead_area, process.amplitude + process.beam_radius)
         self.z = np.arange(-process.substrate_depth + GRID / 2, top + GRID, GRID)
-        Y, Z = np.meshgrid(self.y, self.z, indexing="ij")
+        Z = np.meshgrid(self.y, self.z, indexing="ij")[1]
         self.cap = cap_top(self.y, process.bead_area, process.amplitude + process.beam_radius)
         self.in_cap = (Z >= 0) & (Z < self.cap[:, None])
         self.substrate = Z < 0

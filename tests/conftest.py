@@ -13,6 +13,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from foamlib import FoamFile
 
 from ldna.case import Case
 
@@ -39,7 +40,8 @@ def prepare_test_case(name: str, destination: Path, material_from_template: bool
     """Copy tests/cases/<name> and add the template's fvSchemes and fvSolution.
 
     With ``material_from_template`` the template's thermophysicalProperties
-    (316L and argon) are used as well.
+    are used as well, with one metal: its filler, 316L (the template's
+    substrate metal left out), and argon.
     """
     case = Case.copy_of(TEST_CASES / name, destination / name)
     for file in ("fvSchemes", "fvSolution"):
@@ -47,8 +49,9 @@ def prepare_test_case(name: str, destination: Path, material_from_template: bool
     if material_from_template:
         # A case whose constant/ would hold nothing else has none in git
         (case / "constant").mkdir(exist_ok=True)
-        shutil.copy(TEMPLATE / "constant" / "thermophysicalProperties",
-                    case / "constant" / "thermophysicalProperties")
+        properties = case / "constant" / "thermophysicalProperties"
+        shutil.copy(TEMPLATE / "constant" / "thermophysicalProperties", properties)
+        del FoamFile(properties)["substrate"]
     return case
 
 

@@ -25,6 +25,8 @@ from .material import Metal
 
 #: The template's function objects of metal volume flow through its patches
 FLOW_FUNCTION_OBJECTS = ("metalFlowIn", "metalFlowOut", "metalFlowAtmosphere")
+#: The same as metal mass flows [kg/s] (the template's, weighted by rho.metal)
+MASS_FLOW_FUNCTION_OBJECTS = ("metalMassFlowIn", "metalMassFlowOut", "metalMassFlowAtmosphere")
 
 #: OpenFOAM's default maximum number of linear-solver iterations (lduMatrix)
 DEFAULT_MAX_ITER = 1000
@@ -97,10 +99,15 @@ def metal_mass_balance(case: Case | Path) -> MassBalance:
                          f"(constant mass density), not {metal.density_model}")
 
     inflow = outflow = 0.0
-    for name in FLOW_FUNCTION_OBJECTS:
-        _, volume = step_flows(case, name, float(balances["time"][0]))
-        inflow -= metal.reference_density * volume[volume < 0].sum()
-        outflow += metal.reference_density * volume[volume > 0].sum()
+    for name, mass_name in zip(FLOW_FUNCTION_OBJECTS, MASS_FLOW_FUNCTION_OBJECTS):
+        # The mass flows where the case has them (two metals of different
+        # density), otherwise the volume flows at the metal's density
+        _, mass = step_flows(case, mass_name, float(balances["time"][0]))
+        if mass.size == 0:
+            _, volume = step_flows(case, name, float(balances["time"][0]))
+            mass = metal.reference_density * volume
+        inflow -= mass[mass < 0].sum()
+        outflow += mass[mass > 0].sum()
 
     evaporation = evaporation_table(case)
     return MassBalance(

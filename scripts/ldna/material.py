@@ -21,6 +21,17 @@ from .foamcase import dictionary_value, latest_run_table
 
 #: The solver's table of the metal's properties (postProcessing/<name>/*/<file>.dat)
 PROPERTY_TABLE = ("metalGasMixture", "metal")
+#: The dictionary (and table) of the substrate's own metal, with two metals
+SUBSTRATE = "substrate"
+
+
+def two_metals(case: Path | str) -> bool:
+    """Whether the substrate has its own metal (a ``substrate`` dictionary)."""
+    try:
+        dictionary_value(Path(case), "constant/thermophysicalProperties", f"{SUBSTRATE}/solidus")
+    except KeyError:
+        return False
+    return True
 
 
 @dataclass(frozen=True)
@@ -35,12 +46,15 @@ class Metal:
     density_model: str
     #: Density of mass and inertia with the Boussinesq model [kg/m3]
     reference_density: float
+    #: Its dictionary in thermophysicalProperties and its table's name
+    name: str = "metal"
 
     @classmethod
-    def from_case(cls, case: Path) -> "Metal":
-        """The metal of ``case/constant/thermophysicalProperties``."""
-        def entry(name: str) -> str:
-            return dictionary_value(case, "constant/thermophysicalProperties", f"metal/{name}")
+    def from_case(cls, case: Path, name: str = "metal") -> "Metal":
+        """The filler metal of ``case/constant/thermophysicalProperties``
+        (``name`` "metal"), or the substrate's own (``name`` "substrate")."""
+        def entry(key: str) -> str:
+            return dictionary_value(case, "constant/thermophysicalProperties", f"{name}/{key}")
 
         try:
             model = entry("densityModel")
@@ -49,12 +63,17 @@ class Metal:
         reference = float(entry("referenceDensity")) if model == "Boussinesq" else float("nan")
         return cls(case=Path(case), density_model=model, reference_density=reference,
                    solidus=float(entry("solidus")), liquidus=float(entry("liquidus")),
-                   latent_heat=float(entry("latentHeat")))
+                   latent_heat=float(entry("latentHeat")), name=name)
+
+    @classmethod
+    def substrate_of(cls, case: Path) -> "Metal":
+        """The substrate's metal: its own with two metals, else the filler."""
+        return cls.from_case(case, SUBSTRATE if two_metals(case) else "metal")
 
     @cached_property
     def table(self) -> np.ndarray:
         """The solver's property table of its latest run (the solver must have started)."""
-        return latest_run_table(self.case, *PROPERTY_TABLE)
+        return latest_run_table(self.case, PROPERTY_TABLE[0], self.name)
 
     def _at(self, column: str, T: float) -> float:
         return float(np.interp(T, self.table["T"], self.table[column]))

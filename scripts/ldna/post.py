@@ -20,6 +20,7 @@ The weld frame is the template's: x along the weld (the substrate moves to
 """
 from __future__ import annotations
 
+import math
 import os
 import re
 import shutil
@@ -29,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from .case import Case
-from .material import Metal
+from .material import Metal, two_metals
 
 #: Metal fraction from which a cell counts as metal (meltPoolMetrics default)
 METAL_THRESHOLD = 0.5
@@ -59,6 +60,8 @@ class BeadMetrics:
     fused_section: float = 0.0
     bonded_width: float = 0.0
     unbonded_width: float = 0.0
+    #: Base metal's share of the bead section's metal (two metals; NaN with one)
+    chemical_dilution: float = math.nan
     #: Secant angle of the bead's flanks at the toes [deg] (post only)
     wetting_angle: float = 0.0
 
@@ -67,6 +70,7 @@ class BeadMetrics:
         "pool_length", "pool_width", "penetration", "pool_volume", "bead_width",
         "bead_height", "bead_area", "fused_area", "dilution", "peak_temperature",
         "bead_section", "fused_section", "bonded_width", "unbonded_width",
+        "chemical_dilution",
     )
 
     def as_dict(self) -> dict[str, float]:
@@ -75,8 +79,9 @@ class BeadMetrics:
 
 
 def fusion_temperature(case: Case | Path) -> float:
-    """The solidus of the case's metal [K]: meltPoolMetrics' default fusion line."""
-    return Metal.from_case(Path(case)).solidus
+    """The solidus of the substrate's metal [K] (its own with two metals):
+    meltPoolMetrics' default fusion line."""
+    return Metal.substrate_of(Path(case)).solidus
 
 
 #: meltPoolMetrics' table of the fusion line (postProcessing/<name>/<time>/<file>)
@@ -247,7 +252,8 @@ functions
 }}
 """)
     shutil.rmtree(case / "postProcessing" / POST_FUNCTION / time_name, ignore_errors=True)
-    command = (f"postProcess -dict system/{POST_FUNCTION} -fields '(T alpha.metal)' "
+    fields = "T alpha.metal" + (" fillerFraction" if two_metals(case) else "")
+    command = (f"postProcess -dict system/{POST_FUNCTION} -fields '({fields})' "
                f"-time {time_name}")
     case.run(command, n_procs=n_procs, log_name=POST_FUNCTION)
     # This time's row only: earlier calls left the rows of other times
@@ -373,6 +379,9 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "bead_height_mm": 1e3 * result.bead_height,
         "penetration_mm": 1e3 * result.penetration,
         "dilution": result.dilution,
+        # None (JSON null) with one metal: no composition to measure
+        "chemical_dilution": (None if math.isnan(result.chemical_dilution)
+                              else result.chemical_dilution),
         "wetting_angle_deg": result.wetting_angle,
         "pool_length_mm": 1e3 * result.pool_length,
         "pool_width_mm": 1e3 * result.pool_width,
@@ -556,6 +565,8 @@ def format_metrics(result: BeadMetrics) -> str:
         f"bonded width     {1e3 * result.bonded_width:8.2f} mm",
         f"unbonded width   {1e3 * result.unbonded_width:8.2f} mm",
         f"dilution         {100 * result.dilution:8.2f} %",
+        (f"chemical dilut.  {100 * result.chemical_dilution:8.2f} %"
+         if not math.isnan(result.chemical_dilution) else "chemical dilut.       n/a (one metal)"),
         f"peak metal T     {result.peak_temperature:8.1f} K",
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
         f"deepest fusion x {1e3 * result.fused_section:8.2f} mm",

@@ -38,7 +38,7 @@ import numpy as np
 
 from . import post
 from .case import Case
-from .material import Metal
+from .material import SUBSTRATE, Metal, two_metals
 
 #: Grid spacing of the transverse 2D march [m]: a third of a level-0 cell
 GRID = 0.15e-3
@@ -146,16 +146,40 @@ def beam_profile_along(x: np.ndarray, process: Process) -> np.ndarray:
     return math.sqrt(3 / math.pi) / r * np.exp(-3 * (x - process.laser_x)**2 / r**2)
 
 
+class _Tables:
+    """One metal's enthalpy and conductivity against T (the solver's table)."""
+
+    def __init__(self, metal: Metal) -> None:
+        table = metal.table
+        self.T = np.asarray(table["T"], dtype=float)
+        self.h = np.asarray(table["enthalpy"], dtype=float)
+        self.k = np.asarray(table["kappa"], dtype=float)
+        self.density = metal.reference_density
+
+    def enthalpy(self, T: float) -> float:
+        return float(np.interp(T, self.T, self.h))
+
+    def temperature(self, h: np.ndarray) -> np.ndarray:
+        return np.interp(h, self.h, self.T)
+
+    def conductivity(self, T: np.ndarray) -> np.ndarray:
+        return np.interp(T, self.T, self.k)
+
+    def max_diffusivity(self, T_max: float) -> float:
+        """Largest k / (rho Cp) up to ``T_max`` (the explicit step's limit)."""
+        k_max = float(self.k[self.T <= T_max].max())
+        cp_min = float(np.min(np.diff(self.h) / np.diff(self.T)))
+        return k_max / (self.density * cp_min)
+
+
 class TransverseMarch:
     """The 2D transient of one transverse section carried by the substrate."""
 
-    def __init__(self, process: Process, metal: Metal) -> None:
+    def __init__(self, process: Process, metal: Metal, substrate: Metal | None = None) -> None:
+        """``metal``: the filler (the deposit); ``substrate``: the
+        substrate's own metal (two metals), else the filler's."""
         self.process = process
-        table = metal.table
-        self.T_table = np.asarray(table["T"], dtype=float)
-        self.h_table = np.asarray(table["enthalpy"], dtype=float)
-        self.k_table = np.asarray(table["kappa"], dtype=float)
-        self.density = metal.reference_density
+        self.metals = [_Tables(metal), _Tables(substrate or metal)]
         half = process.width / 2
         self.y = np.arange(-half + GRID / 2, half, GRID)
         top = cap_height(process.bead_area, process.amplitude + process.beam_radius)
@@ -164,21 +188,29 @@ class TransverseMarch:
         self.cap = cap_top(self.y, process.bead_area, process.amplitude + process.beam_radius)
         self.in_cap = (Z >= 0) & (Z < self.cap[:, None])
         self.substrate = Z < 0
+        # Per node: 0 filler, 1 substrate's metal
+        self.material = self.substrate.astype(int)
+        self.density = np.where(self.substrate, self.metals[1].density,
+                                self.metals[0].density)
 
     def temperature(self, h: np.ndarray) -> np.ndarray:
-        return np.interp(h, self.h_table, self.T_table)
+        return np.where(self.substrate, self.metals[1].temperature(h),
+                        self.metals[0].temperature(h))
+
+    def conductivity(self, T: np.ndarray) -> np.ndarray:
+        return np.where(self.substrate, self.metals[1].conductivity(T),
+                        self.metals[0].conductivity(T))
 
     def run(self, x_end: float) -> tuple[np.ndarray, list[np.ndarray]]:
         """Positions along the weld [m] and the section's temperatures there,
         from the first wire to ``x_end``."""
         p = self.process
-        h_ambient = float(np.interp(p.ambient, self.T_table, self.h_table))
-        h_droplet = float(np.interp(p.droplet_temperature, self.T_table, self.h_table))
-        h = np.full(self.in_cap.shape, h_ambient)
+        filler, base = self.metals
+        h = np.where(self.substrate, base.enthalpy(p.ambient), filler.enthalpy(p.ambient))
+        h_droplet = filler.enthalpy(p.droplet_temperature)
         metal = self.substrate.copy()
-        k_max = float(self.k_table[self.T_table <= 2 * p.droplet_temperature].max())
-        cp_min = float(np.min(np.diff(self.h_table) / np.diff(self.T_table)))
-        dt = STEP_SAFETY * GRID**2 * self.density * cp_min / (4 * k_max)
+        diffusivity = max(m.max_diffusivity(2 * p.droplet_temperature) for m in self.metals)
+        dt = STEP_SAFETY * GRID**2 / (4 * diffusivity)
         across = sweep_profile(self.y, p)
         x = p.first_wire
         positions, fields = [], []
@@ -206,7 +238,7 @@ class TransverseMarch:
                 fields.append(snapshot)
                 next_snapshot = x + GRID
             # Conduction between metal neighbours, harmonic face conductivity
-            k = np.interp(T, self.T_table, self.k_table)
+            k = self.conductivity(T)
             flux = np.zeros_like(h)
             for axis in (0, 1):
                 both = np.logical_and(np.take(metal, range(1, metal.shape[axis]), axis=axis),
@@ -242,16 +274,16 @@ def write_estimate(case: Case) -> dict[str, float]:
     must be meshed and set)."""
     case = Case(case)
     process = Process.of(case)
-    metal = solver_metal(case)
-    march = TransverseMarch(process, metal)
+    metal, substrate = solver_metals(case)
+    march = TransverseMarch(process, metal, substrate)
     positions, fields = march.run(process.length)
 
     case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
     centres = case.field("C", "0")
     x, y, z = centres.T
-    alpha = case.field("alpha.metal", "0")
+    substrate_alpha = case.field("alpha.metal", "0")
     deposit = deposit_fraction(case, process, centres)
-    alpha = np.clip(np.maximum(alpha, deposit), 0.0, 1.0)
+    alpha = np.clip(np.maximum(substrate_alpha, deposit), 0.0, 1.0)
     # The section that passed x, in the march: bilinear in (y, z)
     index = np.clip(np.searchsorted(positions, x) - 1, 0, len(positions) - 1)
     T = np.full(len(x), process.ambient)
@@ -266,6 +298,11 @@ def write_estimate(case: Case) -> dict[str, float]:
     case.write_field("T", values=T)
     case.write_field("alpha.metal", values=alpha)
     case.write_field("U", values=velocity)
+    if substrate is not None:
+        # The deposit is filler, the rest of the metal the substrate's
+        filler = np.divide(alpha - substrate_alpha, alpha, out=np.zeros_like(alpha),
+                           where=alpha > 0)
+        case.write_field("fillerFraction", values=np.clip(filler, 0.0, 1.0))
     # The geometry fields were only for this
     for name in ("C", "Cx", "Cy", "Cz", "V"):
         (case / "0" / name).unlink(missing_ok=True)
@@ -321,10 +358,10 @@ def deposit_fraction(case: Case, process: Process, centres: np.ndarray) -> np.nd
     return fraction / SAMPLES**3
 
 
-def solver_metal(case: Case) -> Metal:
-    """The case's metal with the solver's own property table, from a run of
-    the solver to time 0 in a scratch copy (the case's postProcessing stays
-    as it was)."""
+def solver_metals(case: Case) -> tuple[Metal, Metal | None]:
+    """The case's filler and, with two metals, the substrate's metal, with
+    the solver's own property tables, from a run of the solver to time 0 in
+    a scratch copy (the case's postProcessing stays as it was)."""
     with tempfile.TemporaryDirectory() as scratch:
         copy = Case.copy_of(case, Path(scratch) / "case")
         shutil.copytree(case / "constant" / "polyMesh", copy / "constant" / "polyMesh")
@@ -332,4 +369,8 @@ def solver_metal(case: Case) -> Metal:
         copy.run("ldnaFoam", log_name="ldnaFoam")
         metal = Metal.from_case(copy.path)
         metal.table  # read before the scratch copy goes
-    return metal
+        substrate = None
+        if two_metals(copy.path):
+            substrate = Metal.from_case(copy.path, SUBSTRATE)
+            substrate.table
+    return metal, substrate

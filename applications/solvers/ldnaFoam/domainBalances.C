@@ -13,7 +13,9 @@ Foam::domainBalances::domainBalances(const fvMesh& mesh)
     mesh_(mesh),
     file_(mesh, "balances", "balances"),
     energyIterations_(0),
-    energyUnconverged_(0)
+    energyUnconverged_(0),
+    fillerFile_(),
+    fillerClipped_(0)
 {
     file_.writeHeader
     (
@@ -142,6 +144,52 @@ void Foam::domainBalances::write
 
     energyIterations_ = 0;
     energyUnconverged_ = 0;
+
+    if (mixture.twoMetals())
+    {
+        writeFiller(mixture, alpha1);
+    }
+}
+
+
+void Foam::domainBalances::writeFiller
+(
+    const metalGasMixture& mixture,
+    const volScalarField& alpha1
+)
+{
+    if (!fillerFile_.valid())
+    {
+        fillerFile_.reset(new tableFile(mesh_, "balances", "filler"));
+        fillerFile_->writeHeader
+        (
+            "Filler metal per time step: its volume [m3], the volume the"
+            " clip of the filler fraction to [0, 1] added in the run [m3],"
+            " the range of the filler fraction in cells with metal",
+            {"fillerVolume", "clippedVolume", "fillerMin", "fillerMax"}
+        );
+    }
+
+    const scalarField& c = mixture.fillerFraction().primitiveField();
+    scalar cMin = GREAT;
+    scalar cMax = -GREAT;
+    forAll(c, celli)
+    {
+        if (alpha1[celli] > 0)
+        {
+            cMin = min(cMin, c[celli]);
+            cMax = max(cMax, c[celli]);
+        }
+    }
+    reduce(cMin, minOp<scalar>());
+    reduce(cMax, maxOp<scalar>());
+
+    const scalar volume = mixture.fillerVolume();
+    Info<< "Filler at t = " << mesh_.time().timeName()
+        << ": volume = " << volume << " m3, clipped = " << fillerClipped_
+        << " m3, filler fraction in [" << cMin << ", " << cMax << "]"
+        << endl;
+    fillerFile_->writeRow({volume, fillerClipped_, cMin, cMax});
 }
 
 

@@ -107,6 +107,7 @@ int main(int argc, char *argv[])
             metal.collect(fvOptions, rho1, alpha1);
             #include "alphaControls.H"
             #include "alphaEqnSubCycle.H"
+            #include "fillerEqn.H"
             endProfiling(alpha);
 
             addProfiling(momentum, "ldnaFoam.UEqn");

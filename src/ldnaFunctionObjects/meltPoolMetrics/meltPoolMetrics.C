@@ -73,7 +73,13 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
     // Metal phase and fusion isotherm default to the case's material
     const IOdictionary properties(readThermophysicalProperties(mesh_));
     const word metal = properties.get<wordList>("phases").first();
-    const dictionary& metalDict = properties.subDict(metal);
+
+    // The fusion line is the substrate's: its own metal's with two metals
+    const word substrate("substrate");
+    const bool twoMetals = properties.isDict(substrate);
+    const dictionary& metalDict =
+        properties.subDict(twoMetals ? substrate : metal);
+    fillerFractionName_ = twoMetals ? word("fillerFraction") : word::null;
 
     alphaName_ = dict.lookupOrDefault<word>("alpha", "alpha." + metal);
 
@@ -215,6 +221,11 @@ Foam::functionObjects::meltPoolMetrics::calculate()
     // Pass 1: the pool, the peak temperature and the bead area of each slice
     boundBox pool(boundBox::invertedBox);
     scalarList beadArea(nSlices_, Zero);
+    scalarList baseArea(nSlices_, Zero);
+    const volScalarField* fillerPtr =
+        fillerFractionName_.empty()
+      ? nullptr
+      : &lookupObject<volScalarField>(fillerFractionName_);
 
     forAll(V, celli)
     {
@@ -233,7 +244,12 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         }
         if (c.z() >= surfaceHeight_)
         {
-            beadArea[slice(c.x())] += alpha[celli]*V[celli]/bb.span().x();
+            const scalar area = alpha[celli]*V[celli]/bb.span().x();
+            beadArea[slice(c.x())] += area;
+            if (fillerPtr)
+            {
+                baseArea[slice(c.x())] += (1 - (*fillerPtr)[celli])*area;
+            }
         }
     }
 
@@ -243,6 +259,8 @@ Foam::functionObjects::meltPoolMetrics::calculate()
     reduce(m.peakTemperature, maxOp<scalar>());
     Pstream::listCombineGather(beadArea, plusEqOp<scalar>());
     Pstream::listCombineScatter(beadArea);
+    Pstream::listCombineGather(baseArea, plusEqOp<scalar>());
+    Pstream::listCombineScatter(baseArea);
 
     if (m.poolVolume > 0)
     {
@@ -261,6 +279,10 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         fixedBeadSection_ ? slice(beadSection_) : largestSlice(beadArea);
     m.beadSection = sliceCentre(beadSlice);
     m.beadArea = beadArea[beadSlice];
+    if (m.beadArea > 0)
+    {
+        m.chemicalDilution = baseArea[beadSlice]/m.beadArea;
+    }
 
     // Pass 2: extent of the metal above the surface in the bead section
     boundBox bead(boundBox::invertedBox);
@@ -325,6 +347,10 @@ void Foam::functionObjects::meltPoolMetrics::writeFileHeader(Ostream& os)
     {
         writeTabbed(os, column);
     }
+    if (!fillerFractionName_.empty())
+    {
+        writeTabbed(os, "chemicalDilution");
+    }
     os  << endl;
 
     writtenHeader_ = true;
@@ -344,6 +370,7 @@ Foam::functionObjects::meltPoolMetrics::meltPoolMetrics
     writeFile(mesh_, name, typeName, dict),
     surfaceHeight_(0),
     fusionTemperature_(0),
+    fillerFractionName_(),
     poolTemperature_(0),
     metalThreshold_(0.5),
     fixedBeadSection_(false),
@@ -413,6 +440,10 @@ bool Foam::functionObjects::meltPoolMetrics::write()
         )
         {
             file() << tab << value;
+        }
+        if (!fillerFractionName_.empty())
+        {
+            file() << tab << m.chemicalDilution;
         }
         file() << endl;
 

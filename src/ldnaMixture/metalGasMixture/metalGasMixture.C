@@ -7,6 +7,7 @@
 #include "physicalLimits.H"
 #include "layeredConductivity.H"
 #include "fvc.H"
+#include "upwind.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -21,6 +22,10 @@ const Foam::word Foam::metalGasMixture::interfacePressureName
 (
     "interfacePressure"
 );
+
+const Foam::word Foam::metalGasMixture::substrateName("substrate");
+
+const Foam::word Foam::metalGasMixture::fillerFractionName("fillerFraction");
 
 const Foam::scalar Foam::metalGasMixture::Tref = 298.15;
 
@@ -37,7 +42,10 @@ void Foam::metalGasMixture::readCoeffs()
     ldna::checkKeys
     (
         *this,
-        {"phases", "pMin", "curvatureSmoothing", "sigma", "metal", "gas"}
+        {
+            "phases", "pMin", "curvatureSmoothing", "sigma", phase1Name(),
+            substrateName, "gas"
+        }
     );
 
     pMin_ = dimensionedScalar
@@ -51,26 +59,31 @@ void Foam::metalGasMixture::readCoeffs()
 
     curvature_.read(*this);
 
+    const wordList metalKeys
+    {
+        "densityModel", "referenceDensity", "solidus", "liquidus",
+        "latentHeat", "rho", "Cp", "kappa", "mu"
+    };
     const dictionary& metal = subDict(phase1Name());
-    ldna::checkKeys
-    (
-        metal,
-        {
-            "densityModel", "referenceDensity", "solidus", "liquidus",
-            "latentHeat", "rho", "Cp", "kappa", "mu"
-        }
-    );
+    ldna::checkKeys(metal, metalKeys);
+    const dictionary* substrate = findDict(substrateName);
+    if (substrate)
+    {
+        ldna::checkKeys(*substrate, metalKeys);
+    }
 
-    metalDensity_ = metalDensityModel::New(metal);
-    metal_.reset
+    metals_.reset
     (
-        new metalProperties(metal, propertyCheckTmin, propertyCheckTmax, Tref)
+        new metalComposition
+        (
+            metal, substrate, propertyCheckTmin, propertyCheckTmax, Tref
+        )
     );
 
     // Written whenever the properties are read, so that a dictionary
     // changed during the run gets its table too (the newest file is the
     // one in force)
-    metal_->writeTable
+    metals_->writeTables
     (
         db(), typeName, propertyCheckTmin, limits::temperature,
         propertyTableStep
@@ -123,7 +136,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::evaluate
     scalarField& rc = result.primitiveFieldRef();
     forAll(rc, celli)
     {
-        rc[celli] = f(Tc[celli], glc[celli]);
+        rc[celli] = f(Tc[celli], glc[celli], fillerFractionAt(celli));
     }
 
     volScalarField::Boundary& rb = result.boundaryFieldRef();
@@ -134,7 +147,14 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::evaluate
         fvPatchScalarField& rp = rb[patchi];
         forAll(rp, facei)
         {
-            rp[facei] = f(Tp[facei], glp[facei]);
+            rp[facei] =
+                f
+                (
+                    Tp[facei], glp[facei],
+                    fillerFraction_.valid()
+                  ? fillerFraction_->boundaryField()[patchi][facei]
+                  : scalar(1)
+                );
         }
     }
 
@@ -272,11 +292,45 @@ Foam::metalGasMixture::metalGasMixture
     pMin_("pMin", dimPressure, Zero),
     sigmaModel_(surfaceTensionModel::New(*this, U.mesh())),
     curvature_(alpha1()),
-    metalDensity_(),
+    metals_(),
+    fillerFraction_(),
+    gas_(),
     gasDensity_()
 {
     readCoeffs();
     correct();
+
+    if (metals_->twoMetals())
+    {
+        fillerFraction_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    fillerFractionName,
+                    U.time().timeName(),
+                    U.mesh(),
+                    IOobject::MUST_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                U.mesh()
+            )
+        );
+        const scalarField& c = fillerFraction_->primitiveField();
+        forAll(c, celli)
+        {
+            if (!(c[celli] >= 0 && c[celli] <= 1))
+            {
+                FatalErrorInFunction
+                    << "Field " << fillerFraction_->objectPath()
+                    << ": value " << c[celli] << " in cell " << celli
+                    << " is outside its range [0, 1] (the filler's share of"
+                    << " the metal's volume)" << exit(FatalError);
+            }
+        }
+        fillerFraction_->oldTime();
+    }
 
     if (min(T_).value() <= 0)
     {
@@ -294,7 +348,8 @@ Foam::metalGasMixture::metalGasMixture
         forAll(liquidFraction_, celli)
         {
             liquidFraction_[celli] =
-                metal_->equilibriumLiquidFraction(T_[celli]);
+                metals_->range(fillerFractionAt(celli))
+               .equilibriumLiquidFraction(T_[celli]);
         }
     }
 
@@ -328,12 +383,16 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::sigma() const
 
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h1() const
 {
-    const scalar L = metal_->latentHeat();
     return evaluate
     (
         "h1",
         dimEnergy/dimMass,
-        [&](scalar T, scalar gl) { return metal_->sensibleEnthalpy(T) + gl*L; }
+        [&](scalar T, scalar gl, scalar c)
+        {
+            return
+                metals_->sensibleEnthalpy(T, c)
+              + gl*metals_->range(c).latentHeat();
+        }
     );
 }
 
@@ -344,7 +403,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::h2() const
     (
         "h2",
         dimEnergy/dimMass,
-        [&](scalar T, scalar) { return gas_->sensibleEnthalpy(T); }
+        [&](scalar T, scalar, scalar) { return gas_->sensibleEnthalpy(T); }
     );
 }
 
@@ -355,7 +414,10 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::kappa1() const
     (
         "kappa1",
         kappa_.dimensions(),
-        [&](scalar T, scalar gl) { return metal_->conductivity(T, gl); }
+        [&](scalar T, scalar gl, scalar c)
+        {
+            return metals_->conductivity(T, gl, c);
+        }
     );
 }
 
@@ -366,7 +428,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::kappa2() const
     (
         "kappa2",
         kappa_.dimensions(),
-        [&](scalar T, scalar) { return gas_->conductivity(T); }
+        [&](scalar T, scalar, scalar) { return gas_->conductivity(T); }
     );
 }
 
@@ -392,7 +454,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp1() const
     (
         "Cp1",
         dimEnergy/dimMass/dimTemperature,
-        [&](scalar T, scalar) { return metal_->Cp(T); }
+        [&](scalar T, scalar, scalar c) { return metals_->Cp(T, c); }
     );
 }
 
@@ -403,7 +465,7 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::Cp2() const
     (
         "Cp2",
         dimEnergy/dimMass/dimTemperature,
-        [&](scalar T, scalar) { return gas_->Cp(T); }
+        [&](scalar T, scalar, scalar) { return gas_->Cp(T); }
     );
 }
 
@@ -452,7 +514,8 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
     {
         C[celli] =
             m1[celli]*C[celli] + m2[celli]*Cp2Field[celli]
-          + metal_->latentSlope(liquidFraction_[celli], m1Latent[celli]);
+          + metals_->range(fillerFractionAt(celli))
+           .latentSlope(liquidFraction_[celli], m1Latent[celli]);
     }
     C.boundaryFieldRef() = Zero;
 
@@ -523,8 +586,6 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
     const scalarField& m2
 )
 {
-    const scalar L = metal_->latentHeat();
-
     const volScalarField Cp1Field(Cp1());
     const volScalarField Cp2Field(Cp2());
 
@@ -536,16 +597,18 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
         const scalar C = m*Cp1Field[celli] + m2[celli]*Cp2Field[celli];
         const scalar gl0 = liquidFraction_[celli];
         const scalar Tc = T_[celli];
+        const meltingRange range(metals_->range(fillerFractionAt(celli)));
+        const scalar L = range.latentHeat();
 
         // Local enthalpy as the energy equation linearised it about Tstar,
         // kept by the projection: C T' + m L F(T') = H
         const scalar H =
             C*Tc + m*L*gl0
-          + metal_->latentSlope(liquidFraction_[celli], m)*(Tc - Tstar[celli]);
+          + range.latentSlope(liquidFraction_[celli], m)*(Tc - Tstar[celli]);
 
         scalar gl;
         scalar Tnew;
-        metal_->equilibrate(H, C, m, Tnew, gl);
+        range.equilibrate(H, C, m, Tnew, gl);
 
         // Weighted by the metal fraction: a cell with a trace of metal may
         // flip between solid and liquid without carrying latent heat
@@ -568,7 +631,12 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
         }
         forAll(Tp, facei)
         {
-            glb[patchi][facei] = metal_->equilibriumLiquidFraction(Tp[facei]);
+            const scalar c =
+                fillerFraction_.valid()
+              ? fillerFraction_->boundaryField()[patchi][facei]
+              : scalar(1);
+            glb[patchi][facei] =
+                metals_->range(c).equilibriumLiquidFraction(Tp[facei]);
         }
     }
     liquidFraction_.correctBoundaryConditions();
@@ -583,15 +651,26 @@ void Foam::metalGasMixture::correctThermo()
     (
         "rho1",
         dimDensity,
-        [&](scalar T, scalar gl) { return metal_->density(T, gl); }
+        [&](scalar T, scalar gl, scalar c)
+        {
+            return metals_->density(T, gl, c);
+        }
     );
-    metalDensity_->correct(rho1Gravity_, rho1_);
+    rho1_ = evaluate
+    (
+        "rho1",
+        dimDensity,
+        [&](scalar T, scalar gl, scalar c)
+        {
+            return metals_->massDensity(T, gl, c);
+        }
+    );
 
     psi2_ = evaluate
     (
         "psi2",
         dimDensity/dimPressure,
-        [&](scalar T, scalar)
+        [&](scalar T, scalar, scalar)
         {
             return 1/(gas_->R()*gasDensity_->massTemperature(T));
         }
@@ -606,9 +685,9 @@ void Foam::metalGasMixture::correctThermo()
         (
             "mu1",
             mu_.dimensions(),
-            [&](scalar T, scalar)
+            [&](scalar T, scalar, scalar c)
             {
-                return metal_->viscosity(T);
+                return metals_->viscosity(T, c);
             }
         )
     );
@@ -618,7 +697,7 @@ void Foam::metalGasMixture::correctThermo()
         (
             "mu2",
             mu_.dimensions(),
-            [&](scalar T, scalar) { return gas_->viscosity(T); }
+            [&](scalar T, scalar, scalar) { return gas_->viscosity(T); }
         )
     );
     mu_ = alpha1()*mu1 + alpha2()*mu2;
@@ -640,6 +719,184 @@ Foam::scalar Foam::metalGasMixture::metalMass() const
 Foam::scalar Foam::metalGasMixture::totalEnthalpy() const
 {
     return fvc::domainIntegrate(volumetricEnthalpy()).value();
+}
+
+
+const Foam::volScalarField& Foam::metalGasMixture::fillerFraction() const
+{
+    if (!fillerFraction_.valid())
+    {
+        FatalErrorInFunction
+            << "The filler fraction exists with two metals only (dictionary "
+            << substrateName << " in " << objectPath() << ")"
+            << exit(FatalError);
+    }
+    return *fillerFraction_;
+}
+
+
+Foam::volScalarField& Foam::metalGasMixture::fillerFraction()
+{
+    return const_cast<volScalarField&>
+    (
+        static_cast<const metalGasMixture&>(*this).fillerFraction()
+    );
+}
+
+
+Foam::scalar Foam::metalGasMixture::fillerVolume() const
+{
+    if (!fillerFraction_.valid())
+    {
+        return 0;
+    }
+    return gSum
+    (
+        (alpha1().primitiveField()*fillerFraction_->primitiveField())
+       *alpha1().mesh().V().field()
+    );
+}
+
+
+Foam::scalar Foam::metalGasMixture::transportFiller
+(
+    const surfaceScalarField& alphaPhi1,
+    const volScalarField::Internal& fillerSource
+)
+{
+    if (!fillerFraction_.valid())
+    {
+        return 0;
+    }
+
+    const fvMesh& mesh = alpha1().mesh();
+    const scalar deltaT = mesh.time().deltaTValue();
+    volScalarField& c = *fillerFraction_;
+    const volScalarField& c0 = c.oldTime();
+    const volScalarField& alpha10 = alpha1().oldTime();
+
+    // The metal's flux carries the filler of its upwind cell (or of the
+    // boundary value where metal flows in)
+    const surfaceScalarField fillerPhi
+    (
+        "fillerPhi",
+        alphaPhi1*upwind<scalar>(mesh, alphaPhi1).interpolate(c0)
+    );
+    const scalarField netMetalOutflow
+    (
+        deltaT*fvc::surfaceIntegrate(alphaPhi1)().primitiveField()
+    );
+    const scalarField netFillerOutflow
+    (
+        deltaT*fvc::surfaceIntegrate(fillerPhi)().primitiveField()
+    );
+
+    const scalarField& a = alpha1().primitiveField();
+    const scalarField& a0 = alpha10.primitiveField();
+    scalarField& cc = c.primitiveFieldRef();
+    const scalarField& V = mesh.V().field();
+
+    scalar clipped = 0;
+    forAll(cc, celli)
+    {
+        const scalar cOld = c0[celli];
+        const scalar added = deltaT*fillerSource[celli];
+        // Every other change of the cell's metal keeps its composition
+        const scalar rest = a[celli] - a0[celli] + netMetalOutflow[celli] - added;
+        const scalar filler =
+            a0[celli]*cOld - netFillerOutflow[celli] + added + rest*cOld;
+
+        if (a[celli] > 0)
+        {
+            const scalar cNew = min(max(filler/a[celli], scalar(0)), scalar(1));
+            clipped += (cNew*a[celli] - filler)*V[celli];
+            cc[celli] = cNew;
+        }
+        else
+        {
+            clipped -= filler*V[celli];
+            cc[celli] = cOld;
+        }
+    }
+    c.correctBoundaryConditions();
+
+    return returnReduce(clipped, sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::metalGasMixture::addFiller
+(
+    const label celli,
+    const scalar dAlpha,
+    const scalar h,
+    const scalar Tin
+)
+{
+    volScalarField& alpha = alpha1();
+    const scalar a = alpha[celli];
+    const scalar aNew = a + dAlpha;
+    const scalar T0 = T_[celli];
+    const scalar gl0 = liquidFraction_[celli];
+    const scalar c0 = fillerFractionAt(celli);
+    const scalar r1 = rho1_[celli];
+    const scalar r2 = rho2_[celli];
+
+    // The filler's density at the cell's state (with one metal, rho1)
+    const scalar rFiller = metals_->massDensity(T0, gl0, 1);
+
+    // Filler fraction and metal density after the addition
+    scalar c = c0;
+    scalar r1New = r1;
+    if (fillerFraction_.valid())
+    {
+        c = (a*c0 + dAlpha)/aNew;
+        r1New = (a*r1 + dAlpha*rFiller)/aNew;
+    }
+    const meltingRange range0(metals_->range(c0));
+    const meltingRange range(metals_->range(c));
+
+    const scalar E =
+        a*r1*(metals_->sensibleEnthalpy(T0, c0) + gl0*range0.latentHeat())
+      + (1 - a - dAlpha)*r2*gas_->sensibleEnthalpy(T0)
+      + dAlpha*rFiller*h;
+
+    // The temperature of that enthalpy (monotonic in T), by bisection
+    // between the cell's and the added metal's temperatures
+    auto enthalpyAt = [&](const scalar Tc)
+    {
+        return
+            aNew*r1New
+           *(
+                metals_->sensibleEnthalpy(Tc, c)
+              + range.equilibriumLiquidFraction(Tc)*range.latentHeat()
+            )
+          + (1 - aNew)*r2*gas_->sensibleEnthalpy(Tc);
+    };
+    scalar Tlow = min(T0, Tin) - 1;
+    scalar Thigh = max(T0, Tin) + 1;
+    while (enthalpyAt(Tlow) > E && Tlow > 1)
+    {
+        Tlow *= 0.5;
+    }
+    while (enthalpyAt(Thigh) < E && Thigh < ldna::limits::temperature)
+    {
+        Thigh *= 2;
+    }
+    const label bisections = 60;
+    for (label iter = 0; iter < bisections; ++iter)
+    {
+        const scalar Tmid = 0.5*(Tlow + Thigh);
+        (enthalpyAt(Tmid) < E ? Tlow : Thigh) = Tmid;
+    }
+    T_[celli] = 0.5*(Tlow + Thigh);
+    liquidFraction_[celli] = range.equilibriumLiquidFraction(T_[celli]);
+    alpha[celli] = aNew;
+    if (fillerFraction_.valid())
+    {
+        fillerFraction_()[celli] = c;
+    }
+
+    return rFiller;
 }
 
 

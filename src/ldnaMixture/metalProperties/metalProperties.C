@@ -138,6 +138,7 @@ void Foam::metalProperties::writeTable
 (
     const objectRegistry& obr,
     const fileName& prefix,
+    const word& tableName,
     const scalar Tmin,
     const scalar Tmax,
     const scalar dT
@@ -147,7 +148,7 @@ void Foam::metalProperties::writeTable
     // solver's own to well below any test tolerance (1e-9 relative)
     const label precision = 12;
 
-    tableFile table(obr, prefix, "metal");
+    tableFile table(obr, prefix, tableName);
     if (!table.writeToFile())
     {
         return;

@@ -616,12 +616,9 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
         }
     }
 
-    volScalarField& alpha1 = mixture.alpha1();
-    volScalarField& T = mixture.T();
-    volScalarField& gl = mixture.liquidFraction();
+    const volScalarField& alpha1 = mixture.alpha1();
     const volScalarField& rho1 = mixture.rho1();
     const volScalarField& rho2 = mixture.rho2();
-    const scalar L = mixture.metal().latentHeat();
 
     scalar mass = 0;
     forAll(cells, i)
@@ -632,48 +629,22 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
         // The droplet displaces the gas it takes the place of
         const scalar a = alpha1[celli];
         const scalar dAlpha = f*(1 - a);
-        const scalar aNew = a + dAlpha;
         const scalar r1 = rho1[celli];
         const scalar r2 = rho2[celli];
 
-        // Momentum and enthalpy per unit volume, before and after
+        // Its metal, alpha1, the composition and the enthalpy (mixture)
+        const scalar rFiller =
+            mixture.addFiller(celli, dAlpha, wire.enthalpy, wire.temperature);
+
+        // Momentum per unit volume, before and after
         const scalar rhoOld = a*r1 + (1 - a)*r2;
-        const scalar rhoNew = rhoOld + dAlpha*(r1 - r2);
+        const scalar rhoNew = rhoOld + dAlpha*(rFiller - r2);
         U[celli] =
             (
-                (rhoOld - dAlpha*r2)*U[celli] + dAlpha*r1*velocity
+                (rhoOld - dAlpha*r2)*U[celli] + dAlpha*rFiller*velocity
             )/rhoNew;
 
-        const scalar T0 = T[celli];
-        const scalar hGas0 = mixture.gas().sensibleEnthalpy(T0);
-        const scalar E =
-            a*r1*(mixture.metal().sensibleEnthalpy(T0) + gl[celli]*L)
-          + (1 - a - dAlpha)*r2*hGas0
-          + dAlpha*r1*wire.enthalpy;
-
-        // The temperature of that enthalpy (monotonic in T), by bisection
-        auto enthalpyAt = [&](const scalar Tc)
-        {
-            return
-                aNew*r1
-               *(
-                    mixture.metal().sensibleEnthalpy(Tc)
-                  + mixture.metal().equilibriumLiquidFraction(Tc)*L
-                )
-              + (1 - aNew)*r2*mixture.gas().sensibleEnthalpy(Tc);
-        };
-        scalar Tlow = min(T0, wire.temperature) - 1;
-        scalar Thigh = max(T0, wire.temperature) + 1;
-        for (label iter = 0; iter < 60; ++iter)
-        {
-            const scalar Tmid = 0.5*(Tlow + Thigh);
-            (enthalpyAt(Tmid) < E ? Tlow : Thigh) = Tmid;
-        }
-        T[celli] = 0.5*(Tlow + Thigh);
-        gl[celli] = mixture.metal().equilibriumLiquidFraction(T[celli]);
-        alpha1[celli] = aNew;
-
-        mass += dAlpha*r1*V[celli];
+        mass += dAlpha*rFiller*V[celli];
     }
 
     return returnReduce(mass, sumOp<scalar>());

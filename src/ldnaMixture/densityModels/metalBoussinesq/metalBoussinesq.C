@@ -41,13 +41,12 @@ Foam::metalDensityModels::Boussinesq::Boussinesq(const dictionary& metalDict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::metalDensityModels::Boussinesq::correct
+Foam::scalar Foam::metalDensityModels::Boussinesq::massDensity
 (
-    const volScalarField&,
-    volScalarField& rho1
+    const scalar
 ) const
 {
-    rho1 = referenceDensity_;
+    return referenceDensity_.value();
 }
 
 

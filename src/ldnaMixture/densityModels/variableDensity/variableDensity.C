@@ -19,13 +19,12 @@ namespace metalDensityModels
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::metalDensityModels::variable::correct
+Foam::scalar Foam::metalDensityModels::variable::massDensity
 (
-    const volScalarField& rhoGravity,
-    volScalarField& rho1
+    const scalar rhoGravity
 ) const
 {
-    rho1 = rhoGravity;
+    return rhoGravity;
 }
 
 

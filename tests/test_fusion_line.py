@@ -104,7 +104,7 @@ def measure(case: Case, n_procs: int = 1) -> BeadMetrics:
     in parallel)."""
     if n_procs > 1:
         case.decompose(n_procs)
-        for field in ("T", "alpha.metal"):
+        for field in ("T", "alpha.metal", "fillerFraction"):
             (case / "0" / field).unlink()
     return function_object_metrics(case, 0.0)
 
@@ -140,6 +140,27 @@ def test_fusion_zone_below_the_cell_size(level0_mesh: Case, depth: float,
     # is the penetration
     line = read_fusion_line(case, POST_FUNCTION, 0.0)
     assert line[:, 1].max() == pytest.approx(result.penetration, rel=1e-9)
+
+
+@pytest.mark.parametrize("filler", [1.0, 0.3, 0.0])
+def test_chemical_dilution_is_the_base_metal_share_of_the_bead(level0_mesh: Case,
+                                                                 filler: float) -> None:
+    """The template has two metals (AISI 1024 under 316L).  A bead whose metal
+    is everywhere a mixture of ``filler`` filler and 1 - filler base metal
+    over a substrate of base metal: the chemical dilution is 1 - filler
+    whatever the mesh (the substrate below the surface is not the bead),
+    while the geometric dilution is the fused area's share."""
+    case = level0_mesh
+    seam = 1e-3 * case.scalar("system/caseParameters", "processPosition")
+    prescribed_section(case, 0.15e-3, (seam, 0.0))
+    z = case.field("C", "0")[:, 2]
+    case.write_field("fillerFraction", time="0", values=np.where(z >= 0, filler, 0.0))
+    result = measure(case)
+    print(f"filler {filler}: chemical dilution {result.chemical_dilution:.12f}, "
+          f"geometric {result.dilution:.4f}")
+    assert result.chemical_dilution == pytest.approx(1 - filler, abs=TABLE_PRECISION)
+    area = math.pi * ZONE_HALF_WIDTH * 0.15e-3 / 2
+    assert result.dilution == pytest.approx(area / (area + result.bead_area), rel=AREA_TOLERANCE)
 
 
 @pytest.mark.parametrize("hot_half_width", [None, 5e-3])

@@ -104,7 +104,7 @@ int main(int argc, char *argv[])
         {
             // Each stage is timed when controlDict has profiling active
             addProfiling(alpha, "ldnaFoam.alpha");
-            metal.collect(fvOptions, rho1, alpha1);
+            metal.collect(fvOptions, metalSourceDensity, alpha1);
             #include "alphaControls.H"
             #include "alphaEqnSubCycle.H"
             #include "fillerEqn.H"
@@ -129,7 +129,7 @@ int main(int argc, char *argv[])
         }
 
         addProfiling(insertion, "ldnaFoam.insertMetal");
-        metal.endStep(rho1, mixture.h1());
+        metal.endStep(metalSourceDensity, mixture.h1());
         #include "insertMetal.H"
         endProfiling(insertion);
         balances.write(mixture, T, alpha1);

@@ -80,6 +80,12 @@ Foam::metalSources::metalSources(const fvMesh& mesh)
         handedOn("deferredMetalEnthalpy", mesh),
         mesh,
         dimensionedScalar(dimEnergy/dimMass, Zero)
+    ),
+    addedVolume_
+    (
+        stepOnly("addedMetalVolume", mesh),
+        mesh,
+        dimensionedScalar(dimless/dimTime, Zero)
     )
 {}
 
@@ -183,6 +189,7 @@ void Foam::metalSources::alphaSources
         const scalar heldBack = max(netSource - room, scalar(0));
         Su[celli] -= heldBack;
         deferredVolumeNext_[celli] = heldBack/rDeltaTValue;
+        addedVolume_[celli] = gain > 0 ? gain - heldBack : scalar(0);
     }
 }
 

@@ -8,6 +8,9 @@
 #include "layeredConductivity.H"
 #include "fvc.H"
 #include "upwind.H"
+#include "gaussConvectionScheme.H"
+#include "fvm.H"
+#include "fvMatrices.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -294,6 +297,7 @@ Foam::metalGasMixture::metalGasMixture
     curvature_(alpha1()),
     metals_(),
     fillerFraction_(),
+    fillerDensity_(),
     gas_(),
     gasDensity_()
 {
@@ -322,14 +326,32 @@ Foam::metalGasMixture::metalGasMixture
         {
             if (!(c[celli] >= 0 && c[celli] <= 1))
             {
-                FatalErrorInFunction
-                    << "Field " << fillerFraction_->objectPath()
-                    << ": value " << c[celli] << " in cell " << celli
-                    << " is outside its range [0, 1] (the filler's share of"
-                    << " the metal's volume)" << exit(FatalError);
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__,
+                    fillerFraction_->objectPath(), -1, -1
+                )   << "Field " << fillerFractionName << ": value "
+                    << c[celli] << " in cell " << celli << " must lie in"
+                    << " [0, 1] (the filler's share of the metal's volume)"
+                    << exit(FatalIOError);
             }
         }
         fillerFraction_->oldTime();
+
+        fillerDensity_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "rhoFiller",
+                    U.time().timeName(),
+                    U.mesh()
+                ),
+                U.mesh(),
+                dimensionedScalar(dimDensity, Zero)
+            )
+        );
     }
 
     if (min(T_).value() <= 0)
@@ -665,6 +687,18 @@ void Foam::metalGasMixture::correctThermo()
             return metals_->massDensity(T, gl, c);
         }
     );
+    if (fillerDensity_.valid())
+    {
+        *fillerDensity_ = evaluate
+        (
+            "rhoFiller",
+            dimDensity,
+            [&](scalar T, scalar gl, scalar)
+            {
+                return metals_->massDensity(T, gl, 1);
+            }
+        );
+    }
 
     psi2_ = evaluate
     (
@@ -770,53 +804,59 @@ Foam::scalar Foam::metalGasMixture::transportFiller
     }
 
     const fvMesh& mesh = alpha1().mesh();
-    const scalar deltaT = mesh.time().deltaTValue();
+    const dimensionedScalar rDeltaT(1/mesh.time().deltaT());
     volScalarField& c = *fillerFraction_;
-    const volScalarField& c0 = c.oldTime();
     const volScalarField& alpha10 = alpha1().oldTime();
 
-    // The metal's flux carries the filler of its upwind cell (or of the
-    // boundary value where metal flows in)
-    const surfaceScalarField fillerPhi
+    // Every change of the cell's metal that neither the flux nor the
+    // sources make keeps its composition (the dilatation terms, a sink)
+    const volScalarField::Internal rest
     (
-        "fillerPhi",
-        alphaPhi1*upwind<scalar>(mesh, alphaPhi1).interpolate(c0)
-    );
-    const scalarField netMetalOutflow
-    (
-        deltaT*fvc::surfaceIntegrate(alphaPhi1)().primitiveField()
-    );
-    const scalarField netFillerOutflow
-    (
-        deltaT*fvc::surfaceIntegrate(fillerPhi)().primitiveField()
+        "fillerRest",
+        rDeltaT*(alpha1()() - alpha10())
+      + fvc::div(alphaPhi1)()()
+      - fillerSource
     );
 
+    // Implicit upwind, as the metal fraction's predictor: the filler volume
+    // alpha1 c changes by the metal flux times the donor's c (the inflow
+    // boundary's where metal enters), the sources add filler and the rest
+    // acts at the new c.  Its diagonal, alpha10/dt + inflow + source, holds
+    // every row's off-diagonals (the inflow): c stays within its old values,
+    // its neighbours' and the sources' 1.  A weight of 1e-12 of a full cell
+    // towards the old value keeps empty cells (no metal, no inflow) defined
+    const scalar emptyWeight = 1e-12;
+    fv::gaussConvectionScheme<scalar> upwindConvection
+    (
+        mesh,
+        alphaPhi1,
+        tmp<surfaceInterpolationScheme<scalar>>
+        (
+            new upwind<scalar>(mesh, alphaPhi1)
+        )
+    );
+    fvScalarMatrix fillerEqn
+    (
+        fvm::Sp(rDeltaT*(alpha1()() + emptyWeight), c)
+      - rDeltaT*(alpha10() + emptyWeight)*c.oldTime()()
+      + upwindConvection.fvmDiv(alphaPhi1, c)
+      - fvm::Sp(rest, c)
+     ==
+        fillerSource
+    );
+    fillerEqn.solve();
+
+    // Outside [0, 1] only by the solver's residual: clipped, and the filler
+    // volume that adds reported
     const scalarField& a = alpha1().primitiveField();
-    const scalarField& a0 = alpha10.primitiveField();
-    scalarField& cc = c.primitiveFieldRef();
     const scalarField& V = mesh.V().field();
-
+    scalarField& cc = c.primitiveFieldRef();
     scalar clipped = 0;
     forAll(cc, celli)
     {
-        const scalar cOld = c0[celli];
-        const scalar added = deltaT*fillerSource[celli];
-        // Every other change of the cell's metal keeps its composition
-        const scalar rest = a[celli] - a0[celli] + netMetalOutflow[celli] - added;
-        const scalar filler =
-            a0[celli]*cOld - netFillerOutflow[celli] + added + rest*cOld;
-
-        if (a[celli] > 0)
-        {
-            const scalar cNew = min(max(filler/a[celli], scalar(0)), scalar(1));
-            clipped += (cNew*a[celli] - filler)*V[celli];
-            cc[celli] = cNew;
-        }
-        else
-        {
-            clipped -= filler*V[celli];
-            cc[celli] = cOld;
-        }
+        const scalar cNew = min(max(cc[celli], scalar(0)), scalar(1));
+        clipped += (cNew - cc[celli])*a[celli]*V[celli];
+        cc[celli] = cNew;
     }
     c.correctBoundaryConditions();
 

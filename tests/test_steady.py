@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from ldna.case import Case
-from ldna.steady import (METRICS, MIN_WINDOW, RELATIVE_TOLERANCE, SCALES, averaging_window,
-                         first_steady, judge, ripple_period, window_mean)
+from ldna.steady import (JUDGING_INTERVAL, METRICS, MIN_WINDOW, NOISE_CAP, RELATIVE_TOLERANCE,
+                         SCALES, WINDOWS, averaging_window, first_steady, judge, ripple_period,
+                         window_mean)
 
 #: A bead of mean section 35 mm2 whose area swings by 10 % with a period
 #: longer than the shortest window (as the template's bead: 0.6-0.7 s)
@@ -104,11 +105,11 @@ def test_a_small_metric_is_read_to_the_beads_size() -> None:
 @pytest.mark.unit
 def test_the_first_steady_time() -> None:
     """A bead that grows linearly until G = 1.5 s, then ripples about its mean:
-    first judged steady once the window before the last holds so little of
-    the growth that its mean is within 1 % of the full one: the deficit
-    (G - t + 2 W)^2 / (2 G W) <= 1 % gives t >= G + 2 W - sqrt(0.02 G W);
-    no later than a third window (the ripple's residue in the means, the
-    judging interval); a bead still growing at the end: never."""
+    not judged steady while the last two windows still hold growth (their
+    means rise by more than the noise cap, 5 %, a window), so no earlier
+    than G + 2 W - sqrt(0.02 G W) (where a window before the last holds a
+    deficit of 1 %); steady once all WINDOWS windows lie after the growth,
+    G + WINDOWS W, or before; a bead still growing at the end: never."""
     growth_end = 1.5
     times, table = bead(4.0)
     growth = np.clip(times / growth_end, 0, 1)
@@ -117,8 +118,35 @@ def test_the_first_steady_time() -> None:
     earliest = growth_end + 2 * PERIOD - np.sqrt(2 * RELATIVE_TOLERANCE * growth_end * PERIOD)
     print(f"first steady at {first} s, earliest by the criterion {earliest:.3f} s")
     # The ripple's residue in a window mean: +-0.1 s of its phase here
-    assert first is not None and earliest - 0.1 <= first <= growth_end + 3 * PERIOD
+    assert first is not None
+    assert earliest - 0.1 <= first <= growth_end + WINDOWS * PERIOD + JUDGING_INTERVAL
     assert first_steady(*bead(4.0, growing="bead_width")) is None
+
+
+def scattered(end: float, scatter: float, trend: float = 0.0
+              ) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """The rippling bead with its metrics scattered at random as splashes
+    make them: independent values every 0.1 s, ``scatter`` of the mean
+    (standard deviation), held between them; ``trend`` a second on all."""
+    times, table = bead(end)
+    rng = np.random.default_rng(7)
+    blocks = np.floor(times / 0.1).astype(int)
+    noise = rng.normal(0.0, scatter, (len(MEANS), blocks.max() + 1))
+    return times, {name: values * (1 + noise[i][blocks] + trend * times)
+                   for i, (name, values) in enumerate(table.items())}
+
+
+@pytest.mark.unit
+def test_a_scattered_steady_bead_passes_and_a_drift_beyond_the_scatter_does_not() -> None:
+    """Splash scatter of 10 % in 0.1 s blocks scatters 0.65 s window means by
+    about 4 %, which 1 % alone would never pass; a drift of twice the noise
+    cap a window (16 % a second over 0.65 s windows) is not steady."""
+    verdict = judge(*scattered(4.0, 0.10))
+    print(verdict.reason, {n: f"{m.tolerance / max(abs(m.mean), 1e-30):.3f}"
+                           for n, m in verdict.metrics.items()})
+    assert verdict.steady, verdict.reason
+    drift = 2 * NOISE_CAP / PERIOD
+    assert not judge(*scattered(4.0, 0.10, trend=drift)).steady
 
 
 @pytest.mark.unit

@@ -309,8 +309,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     steady_command = commands.add_parser(
         "steady",
-        help="is the bead quasi-steady? every section metric's mean over the last window "
-             "of whole ripple periods against the window before (works on a running case)",
+        help="is the bead quasi-steady? the drift of every section metric's means over the "
+             "last four windows of whole ripple periods, against 1 %% or the means' noise "
+             "(works on a running case)",
     )
     steady_command.add_argument("case", nargs="?", default=".", type=_case,
                                 help="case directory")

@@ -3,7 +3,7 @@
 A run of the template from a flat substrate is quasi-steady once the bead's
 transverse section at the function object's fixed section (``beadSection``
 of meltPoolMetrics, behind the pool) stops changing: every metric's mean
-over a window of whole ripple periods agrees with the window before
+over windows of whole ripple periods stops drifting (``ldna steady``)
 (:mod:`ldna.steady`).  Then the mass balance holds whatever the models: the
 mean section equals the wires' mass rate over (metal density x welding
 speed).

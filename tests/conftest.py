@@ -55,6 +55,26 @@ def prepare_test_case(name: str, destination: Path, material_from_template: bool
     return case
 
 
+#: What a crash, not a named error, leaves in the output
+CRASHES = ("sigSegv", "Segmentation fault", "sigFpe", "nan")
+
+
+def assert_named_error(case: Case, expected: list[str],
+                       crashes: tuple[str, ...] = CRASHES) -> None:
+    """ldnaFoam stops on the case with a FOAM FATAL IO ERROR whose message
+    holds every text of ``expected``, and does not crash."""
+    result = case.run("ldnaFoam", check=False)
+    output = result.output
+    error = output[output.find("FOAM FATAL"):]
+    print(error[:600])
+    assert result.returncode != 0
+    assert "FOAM FATAL IO ERROR" in output
+    for text in expected:
+        assert text in error, f"'{text}' missing from the error message"
+    for crash in crashes:
+        assert crash not in output
+
+
 @pytest.fixture
 def stefan_case(tmp_path: Path) -> Case:
     """The meshed 1D melting bar of cases/stefanMelting (not yet run)."""

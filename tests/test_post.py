@@ -151,6 +151,8 @@ def check_agreement(a: BeadMetrics, b: BeadMetrics) -> None:
         if name in POST_ONLY:
             continue
         other = b.as_dict()[name]
+        if math.isnan(value) and math.isnan(other):
+            continue  # the chemical dilution of a case with one metal
         assert abs(value - other) <= AGREEMENT * max(abs(value), abs(other), 1e-12), name
 
 

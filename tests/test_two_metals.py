@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import TEMPLATE, prepare_test_case
+from conftest import CRASHES, TEMPLATE, assert_named_error, prepare_test_case
 from ldna.balance import wire_table
 from ldna.case import Case
 from ldna.material import Metal
@@ -198,17 +198,7 @@ def test_a_filler_fraction_outside_0_1_is_refused(composite_bar: Case, value: st
                                                   expected: list[str]) -> None:
     z = np.linspace(0, 1, BAR_CELLS)
     composite_bar.write_field("fillerFraction", values=np.where(z > 0.5, float(value), 0.0))
-    assert_named_error(composite_bar, expected)
+    # The refused value itself may be "nan"
+    assert_named_error(composite_bar, expected,
+                       crashes=tuple(c for c in CRASHES if c != "nan"))
 
-
-def assert_named_error(case: Case, expected: list[str]) -> None:
-    result = case.run("ldnaFoam", check=False)
-    output = result.output
-    error = output[output.find("FOAM FATAL"):]
-    print(error[:600])
-    assert result.returncode != 0
-    assert "FOAM FATAL IO ERROR" in output
-    for text in expected:
-        assert text in error, f"'{text}' missing from the error message"
-    for crash in ("sigSegv", "Segmentation fault", "sigFpe"):
-        assert crash not in output

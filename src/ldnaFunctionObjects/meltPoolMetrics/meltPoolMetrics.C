@@ -75,6 +75,8 @@ void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
     const word metal = properties.get<wordList>("phases").first();
 
     // The fusion line is the substrate's: its own metal's with two metals
+    // The names metalGasMixture gives them (substrateName,
+    // fillerFractionName; its header needs the two-phase libraries' paths)
     const word substrate("substrate");
     const bool twoMetals = properties.isDict(substrate);
     const dictionary& metalDict =
@@ -279,10 +281,6 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         fixedBeadSection_ ? slice(beadSection_) : largestSlice(beadArea);
     m.beadSection = sliceCentre(beadSlice);
     m.beadArea = beadArea[beadSlice];
-    if (m.beadArea > 0)
-    {
-        m.chemicalDilution = baseArea[beadSlice]/m.beadArea;
-    }
 
     // Pass 2: extent of the metal above the surface in the bead section
     boundBox bead(boundBox::invertedBox);
@@ -309,6 +307,8 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         m.beadHeight = bead.max().z() - surfaceHeight_;
         m.bondedWidth = fusionLine_->fusedWidth(bead.min().y(), bead.max().y());
         m.unbondedWidth = m.beadWidth - m.bondedWidth;
+        // Of a bead only: traces of metal over a bare section are no clad
+        m.chemicalDilution = baseArea[beadSlice]/m.beadArea;
     }
 
     const scalar depositedArea = m.fusedArea + m.beadArea;

@@ -4,7 +4,9 @@ blockMesh takes whole cell counts from system/meshLevels/level<N>, written by
 'ldna mesh-levels' from system/caseParameters; the files must match the
 parameters.  After snappyHexMesh's refinement the process zone (the bead and
 pool box and the droplet column of caseParameters) must hold cubic cells of
-0.45 mm / 2^level, and the cells must grow outside it.  A process zone that
+0.45 mm / 2^level, but for the fusion skin (the substrate's top skinDepth
+under the zone), whose cells are split 2^skinLevel times across the
+surface, and the cells must grow outside it.  A process zone that
 misses the laser's footprint or the droplets is refused.  The gmsh route
 (ldna gmsh-mesh, Allrun -gmsh) must give the same mesh as blockMesh.
 """
@@ -68,9 +70,21 @@ def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Case, level: int) 
     centres = cell_field(ldna_case, "writeCellCentres", "C")
     volumes = cell_field(ldna_case, "writeCellVolumes", "V")
     inside = zone_mask(centres, p, shrink=base)
-    print(f"level {level}: {n_cells} cells, {inside.sum()} well inside the process zone")
-    assert inside.sum() > 0
-    assert np.allclose(volumes[inside], h**3, rtol=3 * CUBE_TOLERANCE)
+    # The fusion skin: the substrate's top skinDepth, split skinLevel times
+    # across the surface
+    depth = -centres[:, 2] * 1e3
+    skin = inside & (depth > 0) & (depth < p["skinDepth"])
+    cubes = inside & ~skin
+    skin_layers = 2 ** int(p["skinLevel"])
+    print(f"level {level}: {n_cells} cells, {inside.sum()} well inside the process zone, "
+          f"{skin.sum()} of them in the skin")
+    assert cubes.sum() > 0 and skin.sum() > 0
+    assert np.allclose(volumes[cubes], h**3, rtol=3 * CUBE_TOLERANCE)
+    assert np.allclose(volumes[skin], h**3 / skin_layers, rtol=3 * CUBE_TOLERANCE)
+    # as many skin layers as split cells: the skin's cells stack in
+    # columns of skinDepth / (h / skin_layers)
+    layer_depths = np.unique(np.round(depth[skin], 9))
+    assert len(layer_depths) == round(p["skinDepth"] * 1e-3 / h) * skin_layers
     # Outside the zone and its buffer the cells are the base cells
     far = ~zone_mask(centres, p, shrink=-4 * base)
     assert volumes[far].min() > 0.9 * (base / 2) ** 3

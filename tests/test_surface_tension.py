@@ -20,6 +20,10 @@ from ldna.foamcase import find_tables
 LAPLACE_TOLERANCE = 0.02
 SPURIOUS_VELOCITY_SCALE = 1e-3     # times sigma/mu
 SURFACE_VELOCITY_TOLERANCE = 0.05
+#: The capillary step: the run's length in limits, and the agreement with
+#: the limit (the gas's density moves it by < 3e-4)
+CAPILLARY_STEPS = 20
+CAPILLARY_LIMIT_TOLERANCE = 1e-3
 #: The undriven layer: the time it runs [s]
 REST_END_TIME = 0.05
 
@@ -79,6 +83,47 @@ def test_capillary_force_is_zero_in_solid_metal(static_droplet_case: Case) -> No
           f"largest speed {largest_speed:.2e} m/s")
     assert abs(jump) < 1e-3 * laplace
     assert largest_speed < 1e-9
+
+
+def time_steps(case: Case, end_time: float) -> np.ndarray:
+    """Run the case to ``end_time``, writing every step; return its time steps [s]."""
+    case.set("system/controlDict", "endTime", f"{end_time:g}")
+    case.set("system/controlDict", "writeControl", "timeStep")
+    case.set("system/controlDict", "writeInterval", "1")
+    case.run("ldnaFoam")
+    times = np.array([0.0] + [float(t.name) for t in case.times if float(t.name) > 0])
+    return np.diff(times)
+
+
+def test_capillary_time_step_limit(static_droplet_case: Case) -> None:
+    """At rest only the capillary limit holds the step: sqrt(rho_mean h^3/(2 pi sigma)).
+
+    The cylinder's cells are cubes of h (the mesh's x spacing); rho_mean is
+    the mean of the metal's density and the gas's, which is below 2 kg/m3
+    and changes the limit by less than 0.03 %.
+    """
+    case = static_droplet_case
+    _, _, h = cell_centres_2d(case)
+    rho_metal = case.scalar(PROPERTIES, "metal/rho/liquid")
+    sigma = case.scalar(PROPERTIES, "sigma")
+    expected = math.sqrt(0.5 * rho_metal * h**3 / (2 * math.pi * sigma))
+    steps = time_steps(case, CAPILLARY_STEPS * expected)
+    print(f"steps {steps[-3:]} s, capillary limit {expected:.6e} s")
+    assert abs(steps[-1] / expected - 1) < CAPILLARY_LIMIT_TOLERANCE
+
+
+def test_solid_surface_does_not_limit_the_step(static_droplet_case: Case) -> None:
+    """A solid surface carries no capillary force, so no capillary wave: its step grows past the limit."""
+    case = static_droplet_case
+    solidus = case.scalar(PROPERTIES, "metal/solidus")
+    case.run(f"foamDictionary -entry internalField -set 'uniform {solidus - 300:g}' 0/T",
+             log_name="foamDictionary.T")
+    _, _, h = cell_centres_2d(case)
+    liquid_limit = math.sqrt(0.5 * case.scalar(PROPERTIES, "metal/rho/liquid") * h**3
+                             / (2 * math.pi * case.scalar(PROPERTIES, "sigma")))
+    steps = time_steps(case, CAPILLARY_STEPS * liquid_limit)
+    print(f"solid: last step {steps[-1]:.3e} s, liquid surface's limit {liquid_limit:.3e} s")
+    assert steps[-1] > 2 * liquid_limit
 
 
 @pytest.mark.parametrize("d_sigma_d_t", [-4.3e-4, 4.3e-4])

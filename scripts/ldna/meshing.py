@@ -210,13 +210,28 @@ def write_mesh_levels(case: Path) -> list[Path]:
     return [write_level_file(case, level) for level in range(MAX_LEVEL + 1)]
 
 
+def skin_level(case: Path) -> int:
+    """How often the fusion skin is split across the substrate surface (0: no skin)."""
+    case = Path(case)
+    if not (case / "system" / "refineMeshDict").is_file():
+        return 0
+    value = read_scalars(case / "system" / "caseParameters").get("skinLevel", 0.0)
+    if not (value >= 0 and value == int(value)):
+        raise ValueError(f"{case}/system/caseParameters: skinLevel {value} is not a whole number >= 0")
+    return int(value)
+
+
 def mesh_case(case: Path) -> int:
-    """Mesh an LDNA case as its Allrun does (blockMesh, then snappyHexMesh's
-    refinement of the process zone); return the number of cells."""
+    """Mesh an LDNA case as its Allrun does (blockMesh, snappyHexMesh's
+    refinement of the process zone, the fusion skin split ``skinLevel``
+    times by topoSet + refineMesh); return the number of cells."""
     from .foamcase import run
 
     run(case, "blockMesh")
     run(case, "snappyHexMesh -overwrite")
+    for split in range(1, skin_level(case) + 1):
+        run(case, "topoSet", log_name=f"topoSet.skin{split}")
+        run(case, "refineMesh -overwrite", log_name=f"refineMesh.skin{split}")
     return cell_count(case)
 
 

@@ -546,22 +546,26 @@ Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
 
 
 Foam::tmp<Foam::surfaceScalarField>
+Foam::metalGasMixture::liquidMetalFaceFraction() const
+{
+    // The face's liquid fraction is the metal's (weighted by the metal on
+    // each side): the temperature of a gas cell with a trace of metal is
+    // not the metal's, and its liquid fraction must not decide the force
+    const volScalarField metal(max(min(alpha1(), scalar(1)), scalar(0)));
+    return
+        fvc::interpolate(metal*max(min(liquidFraction_, scalar(1)), scalar(0)))
+       /max(fvc::interpolate(metal), dimensionedScalar("small", dimless, SMALL));
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
 Foam::metalGasMixture::surfaceTensionForce() const
 {
     // Capillary force on liquid metal only: a solid surface does not flow,
-    // and the force on its frozen shape would fight the porosity sink.  The
-    // face's liquid fraction is the metal's (weighted by the metal on each
-    // side): the temperature of a gas cell with a trace of metal is not the
-    // metal's, and its liquid fraction must not decide the force
-    const volScalarField metal(max(min(alpha1(), scalar(1)), scalar(0)));
-    const surfaceScalarField liquidMetalFraction
-    (
-        fvc::interpolate(metal*max(min(liquidFraction_, scalar(1)), scalar(0)))
-       /max(fvc::interpolate(metal), dimensionedScalar("small", dimless, SMALL))
-    );
+    // and the force on its frozen shape would fight the porosity sink
     tmp<surfaceScalarField> tforce
     (
-        liquidMetalFraction
+        liquidMetalFaceFraction()
        *(
             !curvature_.smoothed()
           ? interfaceProperties::surfaceTensionForce()

@@ -4,7 +4,9 @@ A synthetic case prescribes a half-ellipsoid pool below the substrate surface
 and a half-elliptic bead on it; the function object (serial and on two MPI
 ranks, through OpenFOAM's postProcess) and ``ldna post`` (which runs the
 function object at the time it reads) must recover the prescribed sizes
-within one cell.  ``ldna post`` must also render its pictures without a
+between cell centres: the pool's edge from the temperature, the bead's toes
+and top from the metal fraction (exact cut-cell fractions, as a solved
+field has).  ``ldna post`` must also render its pictures without a
 display, and on a real run of the LDNA template report what the function
 object wrote during the run.
 """
@@ -19,6 +21,7 @@ import pytest
 
 from conftest import prepare_test_case
 from ldna.case import Case
+from ldna.material import Metal
 from ldna.post import (BeadMetrics, bead_not_yet_there, configured_bead_section,
                        function_object_metrics, fusion_temperature, post_process,
                        read_function_object_metrics, wetting_angle)
@@ -39,6 +42,12 @@ BEAD_HEIGHT = 1.6e-3
 POOL_TEMPERATURE = 2000.0
 COLD_TEMPERATURE = 300.0
 POOL_GRADIENT = 1e6
+#: Sizes located between cell centres: within this share of a cell of the
+#: prescribed ones (the rows of cell centres nearest the surface see the
+#: shapes 0.04-0.06 mm narrower than the surface does)
+SUBCELL = 0.2
+#: Sub-samples per cell side for the bead's exact metal fractions
+FRACTION_SAMPLES = 40
 #: Preset liquid pool of the run (template coordinates [m]) and its temperature [K]
 #: Metrics that only ldna post computes
 POST_ONLY = ("wetting_angle",)
@@ -61,21 +70,32 @@ def prescribed_fields(centres: np.ndarray,
     a, b, c = POOL_SEMI_AXES
     radius = np.sqrt(((x - POOL_CENTRE[0]) / a) ** 2 + ((y - POOL_CENTRE[1]) / b) ** 2
                      + (z / c) ** 2)
-    in_bead = (z > 0) & (x > BEAD_START) & ((y / BEAD_HALF_WIDTH) ** 2
-                                            + (z / BEAD_HEIGHT) ** 2 < 1)
     temperature = np.clip(fusion_temperature_ + POOL_GRADIENT * c * (1 - radius),
                           COLD_TEMPERATURE, POOL_TEMPERATURE)
-    alpha = np.where((z < 0) | in_bead, 1.0, 0.0)
+    # The bead's metal fraction: the share of each cell's (y, z) square
+    # inside the half-ellipse (the bead is uniform along x)
+    offsets = (np.arange(FRACTION_SAMPLES) + 0.5) / FRACTION_SAMPLES - 0.5
+    sy = y[:, None, None] + CELL * offsets[None, :, None]
+    sz = z[:, None, None] + CELL * offsets[None, None, :]
+    fraction = ((sy / BEAD_HALF_WIDTH) ** 2 + (sz / BEAD_HEIGHT) ** 2 < 1).mean(axis=(1, 2))
+    alpha = np.where(z < 0, 1.0, np.where(x > BEAD_START, fraction, 0.0))
     return temperature, alpha
 
 
-def expected_metrics() -> BeadMetrics:
-    """The prescribed shapes' metrics."""
+def pool_isotherm_radius(case: Case) -> float:
+    """Normalised radius of the pool's edge, T = (solidus + liquidus)/2 of the metal."""
+    metal = Metal.substrate_of(case.path)
+    pool_temperature = 0.5 * (metal.solidus + metal.liquidus)
+    return 1 - (pool_temperature - fusion_temperature(case)) / (POOL_GRADIENT * POOL_SEMI_AXES[2])
+
+
+def expected_metrics(pool_radius: float) -> BeadMetrics:
+    """The prescribed shapes' metrics; the pool ends at ``pool_radius`` of its ellipsoid."""
     a, b, c = POOL_SEMI_AXES
     fused_area = math.pi * b * c / 2
     bead_area = math.pi * BEAD_HALF_WIDTH * BEAD_HEIGHT / 2
     return BeadMetrics(
-        pool_length=2 * a, pool_width=2 * b, penetration=c,
+        pool_length=2 * a * pool_radius, pool_width=2 * b * pool_radius, penetration=c,
         pool_volume=2 * math.pi * a * b * c / 3,
         bead_width=2 * BEAD_HALF_WIDTH, bead_height=BEAD_HEIGHT,
         bead_area=bead_area, fused_area=fused_area,
@@ -105,15 +125,15 @@ def synthetic_pool_case(tmp_path: Path) -> Case:
     return case
 
 
-def check_against_prescribed(result: BeadMetrics, label: str) -> None:
-    """Sizes within one cell, areas within the staircase error, of the prescribed shapes."""
-    expected = expected_metrics()
+def check_against_prescribed(result: BeadMetrics, label: str, pool_radius: float) -> None:
+    """Sizes within a fifth of a cell, areas within the staircase error, of the prescribed shapes."""
+    expected = expected_metrics(pool_radius)
     print(f"{label}: {result}")
     for size in ("pool_length", "pool_width", "penetration", "bead_width", "bead_height"):
         error = abs(getattr(result, size) - getattr(expected, size))
         print(f"  {size}: {1e3 * getattr(result, size):.3f} mm against "
               f"{1e3 * getattr(expected, size):.3f} mm")
-        assert error <= CELL, size
+        assert error <= SUBCELL * CELL, size
     fused_tolerance = area_tolerance(POOL_SEMI_AXES[1], POOL_SEMI_AXES[2])
     bead_tolerance = area_tolerance(BEAD_HALF_WIDTH, BEAD_HEIGHT)
     print(f"  fused area {1e6 * result.fused_area:.3f} mm2 against "
@@ -162,13 +182,14 @@ def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Case, tmp_path: Path)
 
     case.run("postProcess -fields '(T alpha.metal)' -time 0", log_name="postProcess")
     serial_result = function_object_result(case)
-    check_against_prescribed(serial_result, "function object, serial")
+    pool_radius = pool_isotherm_radius(case)
+    check_against_prescribed(serial_result, "function object, serial", pool_radius)
 
     parallel.run("decomposePar -time 0")
     parallel.run("postProcess -fields '(T alpha.metal)' -time 0", n_procs=2,
                  log_name="postProcess")
     parallel_result = function_object_result(parallel)
-    check_against_prescribed(parallel_result, "function object, 2 ranks")
+    check_against_prescribed(parallel_result, "function object, 2 ranks", pool_radius)
 
     check_agreement(serial_result, parallel_result)
 
@@ -181,7 +202,8 @@ def test_post_writes_pictures_headless(synthetic_pool_case: Case) -> None:
         data = picture.read_bytes()
         assert data.startswith(b"\x89PNG"), picture
         assert len(data) > 10_000, f"{picture.name}: {len(data)} bytes"
-    check_against_prescribed(result, "ldna post (pictures run)")
+    check_against_prescribed(result, "ldna post (pictures run)",
+                             pool_isotherm_radius(synthetic_pool_case))
     table = (case / "pictures" / "metrics.csv").read_text().splitlines()
     assert len(table) == 2 and table[0].startswith("time,pool_length")
 

@@ -6,6 +6,9 @@
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "checkedInput.H"
+#include "syncTools.H"
+#include "ListListOps.H"
+#include <algorithm>
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -23,6 +26,10 @@ namespace functionObjects
 // Relative difference of two slice areas taken as round-off: the bead of a
 // uniform cross-section has equal areas in all its slices
 static const Foam::scalar sliceAreaTolerance = 1e-6;
+
+// Cell centres of one row of the bead section differ by round-off only
+// (relative to the cell length)
+static const Foam::scalar rowHeightTolerance = 1e-3;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -211,6 +218,68 @@ Foam::label Foam::functionObjects::meltPoolMetrics::largestSlice
 }
 
 
+Foam::point
+Foam::functionObjects::meltPoolMetrics::weldFrame(const point& p) const
+{
+    return point(p & weldDir_, p & transverseDir_, p & verticalDir_);
+}
+
+
+template<class LinkOp>
+void Foam::functionObjects::meltPoolMetrics::forAllLinks
+(
+    const volScalarField& T,
+    const volScalarField& alpha,
+    const LinkOp& op
+) const
+{
+    const vectorField& C = mesh_.C();
+    const scalarField& Tc = T.primitiveField();
+    const scalarField& alphac = alpha.primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+
+    forAll(nei, facei)
+    {
+        const label a = own[facei];
+        const label b = nei[facei];
+        op
+        (
+            weldFrame(C[a]), weldFrame(C[b]),
+            Tc[a], Tc[b], alphac[a], alphac[b]
+        );
+    }
+
+    const label nInternal = mesh_.nInternalFaces();
+    const labelUList& faceCells = mesh_.faceOwner();
+    pointField neighbourCentre;
+    scalarField neighbourT;
+    scalarField neighbourAlpha;
+    syncTools::swapBoundaryCellPositions(mesh_, C, neighbourCentre);
+    syncTools::swapBoundaryCellList(mesh_, Tc, neighbourT);
+    syncTools::swapBoundaryCellList(mesh_, alphac, neighbourAlpha);
+    for (const polyPatch& patch : mesh_.boundaryMesh())
+    {
+        if (!patch.coupled())
+        {
+            continue;
+        }
+        forAll(patch, i)
+        {
+            const label facei = patch.start() + i;
+            const label bFacei = facei - nInternal;
+            const label celli = faceCells[facei];
+            op
+            (
+                weldFrame(C[celli]), weldFrame(neighbourCentre[bFacei]),
+                Tc[celli], neighbourT[bFacei],
+                alphac[celli], neighbourAlpha[bFacei]
+            );
+        }
+    }
+}
+
+
 Foam::functionObjects::meltPoolMetrics::metrics
 Foam::functionObjects::meltPoolMetrics::calculate()
 {
@@ -241,7 +310,7 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         }
         if (isMetal && T[celli] >= poolTemperature_)
         {
-            pool.add(bb);
+            pool.add(weldFrame(mesh_.C()[celli]));
             m.poolVolume += alpha[celli]*V[celli];
         }
         if (c.z() >= surfaceHeight_)
@@ -254,6 +323,26 @@ Foam::functionObjects::meltPoolMetrics::calculate()
             }
         }
     }
+
+    // The pool's edge between cell centres: where the pool isotherm crosses
+    // a link from a pool cell to a metal cell outside it (T linear along
+    // the link; links to gas end at the surface)
+    forAllLinks
+    (
+        T, alpha,
+        [&](const point& a, const point& b, const scalar Ta, const scalar Tb,
+            const scalar alphaA, const scalar alphaB)
+        {
+            if
+            (
+                alphaA >= metalThreshold_ && alphaB >= metalThreshold_
+             && (Ta >= poolTemperature_) != (Tb >= poolTemperature_)
+            )
+            {
+                pool.add(a + ((poolTemperature_ - Ta)/(Tb - Ta))*(b - a));
+            }
+        }
+    );
 
     reduce(pool.min(), minOp<point>());
     reduce(pool.max(), maxOp<point>());
@@ -282,30 +371,107 @@ Foam::functionObjects::meltPoolMetrics::calculate()
     m.beadSection = sliceCentre(beadSlice);
     m.beadArea = beadArea[beadSlice];
 
-    // Pass 2: extent of the metal above the surface in the bead section
-    boundBox bead(boundBox::invertedBox);
+    // Pass 2: the bead in its section.  Each row of cells above the surface
+    // reaches from toe to toe, where the metal fraction crosses
+    // metalThreshold on a link across the weld (linear along the link);
+    // the toes on the surface are extrapolated linearly from the two
+    // lowest rows (a toe is a wedge, which the lowest row's centres see
+    // half a cell up); the top is where the fraction crosses on a vertical
+    // link, or the highest metal centre
+    auto inSection = [&](const point& c)
+    {
+        return c.z() >= surfaceHeight_ && slice(c.x()) == beadSlice;
+    };
+    const scalar rowTolerance = rowHeightTolerance*sliceLength_;
+    DynamicList<vector2D> rowPoints;   // (height, across)
+    scalar top = -GREAT;
     forAll(V, celli)
     {
-        const boundBox& bb = cellBounds_[celli];
-        const point c = bb.centre();
-        if
-        (
-            alpha[celli] >= metalThreshold_
-         && c.z() >= surfaceHeight_
-         && slice(c.x()) == beadSlice
-        )
+        const point c = weldFrame(mesh_.C()[celli]);
+        if (alpha[celli] >= metalThreshold_ && inSection(c))
         {
-            bead.add(bb);
+            rowPoints.append(vector2D(c.z(), c.y()));
+            top = max(top, c.z());
         }
     }
-    reduce(bead.min(), minOp<point>());
-    reduce(bead.max(), maxOp<point>());
+    forAllLinks
+    (
+        T, alpha,
+        [&](const point& a, const point& b, const scalar, const scalar,
+            const scalar alphaA, const scalar alphaB)
+        {
+            if
+            (
+                !inSection(a) || !inSection(b)
+             || (alphaA >= metalThreshold_) == (alphaB >= metalThreshold_)
+            )
+            {
+                return;
+            }
+            const point p =
+                a + ((metalThreshold_ - alphaA)/(alphaB - alphaA))*(b - a);
+            if (mag(b.z() - a.z()) <= rowTolerance)
+            {
+                rowPoints.append(vector2D(p.z(), p.y()));
+            }
+            else if (mag(b.z() - a.z()) >= 0.5*mag(b - a))
+            {
+                top = max(top, p.z());
+            }
+        }
+    );
+    reduce(top, maxOp<scalar>());
 
-    if (bead.valid())
+    List<List<vector2D>> allRowPoints(Pstream::nProcs());
+    allRowPoints[Pstream::myProcNo()].transfer(rowPoints);
+    Pstream::gatherList(allRowPoints);
+    Pstream::scatterList(allRowPoints);
+    List<vector2D> points
+    (
+        ListListOps::combine<List<vector2D>>
+        (
+            allRowPoints, accessOp<List<vector2D>>()
+        )
+    );
+
+    if (points.size())
     {
-        m.beadWidth = bead.span().y();
-        m.beadHeight = bead.max().z() - surfaceHeight_;
-        m.bondedWidth = fusionLine_->fusedWidth(bead.min().y(), bead.max().y());
+        // The two lowest rows: height and extent across the weld
+        std::sort
+        (
+            points.begin(), points.end(),
+            [](const vector2D& a, const vector2D& b) { return a.x() < b.x(); }
+        );
+        FixedList<vector, 2> rows(vector(GREAT, GREAT, -GREAT));
+        label nRows = 0;
+        for (const vector2D& pt : points)
+        {
+            if (nRows == 0 || pt.x() - rows[nRows - 1].x() > rowTolerance)
+            {
+                if (nRows == rows.size())
+                {
+                    break;
+                }
+                rows[nRows++] = vector(pt.x(), pt.y(), pt.y());
+            }
+            vector& row = rows[nRows - 1];
+            row.y() = min(row.y(), pt.y());
+            row.z() = max(row.z(), pt.y());
+        }
+
+        scalar leftToe = rows[0].y();
+        scalar rightToe = rows[0].z();
+        if (nRows == 2)
+        {
+            const scalar s =
+                (rows[0].x() - surfaceHeight_)/(rows[1].x() - rows[0].x());
+            leftToe -= s*(rows[1].y() - rows[0].y());
+            rightToe += s*(rows[0].z() - rows[1].z());
+        }
+
+        m.beadWidth = max(rightToe - leftToe, scalar(0));
+        m.beadHeight = top - surfaceHeight_;
+        m.bondedWidth = fusionLine_->fusedWidth(leftToe, rightToe);
         m.unbondedWidth = m.beadWidth - m.bondedWidth;
         // Of a bead only: traces of metal over a bare section are no clad
         m.chemicalDilution = baseArea[beadSlice]/m.beadArea;

@@ -11,6 +11,7 @@ it failed with its error line and exits non-zero.
 from __future__ import annotations
 
 import csv
+import json
 import sys
 from pathlib import Path
 
@@ -58,3 +59,40 @@ def test_study_of_a_three_by_one_grid(tmp_path: Path) -> None:
     peak = [float(row["peak_temperature"]) for row in rows]
     print(f"peak metal temperature with droplets at {DROPLET_TEMPERATURES} K: {peak} K")
     assert peak[1] > peak[0], "hotter droplets make hotter metal"
+
+
+#: The resumed study: the first leg's end and the raised end time [s]
+FIRST_LEG_END = 0.01
+RESUMED_END = 0.02
+#: The template's largest time step [s]: a run ends within half a step of its end time
+MAX_DELTA_T = 1e-3
+
+
+def test_study_resumes_from_the_latest_written_time(tmp_path: Path) -> None:
+    """A member run to 10 ms continues to 20 ms with --resume, not from time 0."""
+    study_dir = tmp_path / "study"
+    ldna = Path(sys.executable).parent / "ldna"
+    command = f"{ldna} study {TEMPLATE} {study_dir} --set dropletTemperature=2100"
+    run(tmp_path, f"{command} --end-time {FIRST_LEG_END}", log_name="study")
+    member = study_dir / "member000"
+    first_leg_log = (member / "log.ldnaFoam").read_text()
+    run(tmp_path, f"{command} --end-time {RESUMED_END} --resume", log_name="study.resume")
+
+    log = (member / "log.ldnaFoam").read_text()
+    assert log.startswith(first_leg_log), "the second leg appends to the first's log"
+    assert "Starting time loop" in log[len(first_leg_log):]
+    # The second leg's tables start where the first ended
+    legs = sorted(float(p.name) for p in (member / "postProcessing" / "balances").iterdir())
+    print(f"balance tables from {legs} s")
+    assert len(legs) == 2 and legs[0] == 0.0
+    assert abs(legs[1] - FIRST_LEG_END) < MAX_DELTA_T
+
+    results = json.loads((study_dir / "results.json").read_text())["runs"]
+    assert len(results) == 1
+    run_ = results[0]
+    print({k: run_[k] for k in ("status", "end_time_s", "steady", "bead_width_mm")})
+    assert run_["status"] == "done"
+    assert abs(run_["end_time_s"] - RESUMED_END) < MAX_DELTA_T
+    assert run_["steady"] is False, "20 ms of welding is no steady bead"
+    assert run_["dropletTemperature"] == "2100"
+    assert (member / "pictures" / "transverse.png").is_file()

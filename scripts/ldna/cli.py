@@ -47,11 +47,15 @@ def _study(args: argparse.Namespace) -> int:
 
     parameters = [study.Parameter.parse(text) for text in args.set]
     members, table = study.run_study(Path(args.template), Path(args.study_dir), parameters,
-                                     end_time=args.end_time, n_procs=args.np)
+                                     end_time=args.end_time, n_procs=args.np,
+                                     resume=args.resume)
     failed = [m.name for m in members if m.status != "done"]
-    print(f"{len(members)} members, {len(failed)} failed; results: {table}")
+    print(f"{len(members)} members, {len(failed)} failed; results: {table} "
+          f"and {table.with_suffix('.json')}")
     if failed:
-        print("failed: " + ", ".join(failed) + " (see their log.Allrun and log.*)")
+        print("failed: " + ", ".join(failed) + " (see their log.Allrun and log.*); "
+              "to continue the members from their latest written time, run the same "
+              "command with --resume")
     return 1 if failed else 0
 
 
@@ -238,7 +242,8 @@ def build_parser() -> argparse.ArgumentParser:
         "study",
         help="run a case template over a parameter grid and collect the bead metrics in a CSV",
         description="Copy TEMPLATE into STUDY_DIR once per member of the grid of --set "
-                    "values, run each member's Allrun, collect STUDY_DIR/results.csv.",
+                    "values, run each member's Allrun, collect STUDY_DIR/results.csv and "
+                    "results.json (with ldna post's figures and ldna steady's verdict).",
     )
     study.add_argument("template", type=_case, help="case template, e.g. cases/ldna")
     study.add_argument("study_dir", help="folder of the study (members and results.csv)")
@@ -248,6 +253,10 @@ def build_parser() -> argparse.ArgumentParser:
                             "(e.g. constant/fvOptions:laser/absorptionModel); repeat for more")
     study.add_argument("--end-time", type=_positive_float, help="simulated time of every member [s]")
     study.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per member (1: serial)")
+    study.add_argument("--resume", action="store_true",
+                       help="keep the members that exist and continue each from its latest "
+                            "written time (--end-time may be raised); finished ones are only "
+                            "collected")
     study.set_defaults(func=_study)
 
     accuracy = commands.add_parser(

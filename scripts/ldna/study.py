@@ -4,7 +4,14 @@ A study copies a case template once per member of a parameter grid into a
 study folder, sets the member's values, runs each member with the
 template's ``Allrun`` (serially or on MPI ranks), shows a progress bar, and
 collects parameters, run time and the bead metrics of each member's last
-``meltPoolMetrics`` row into one CSV.
+``meltPoolMetrics`` row into one CSV.  ``results.json`` holds per member
+what ``ldna post --json`` reports at its last time (with its pictures in the
+member's ``pictures/``) and ``ldna steady``'s verdict.
+
+Runs longer than a session resume: ``ldna study ... --resume`` with the same
+``--set`` values keeps the members that exist, continues each from its
+latest written time (``Allrun -resume``; ``--end-time`` may be raised) and
+only collects the finished ones.
 
 A parameter is named like the entry it sets:
 
@@ -26,9 +33,13 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import json
+import math
+
 from .case import Case
-from .foamcase import BALANCES, ENV_SCRIPT
-from .post import BeadMetrics, read_function_object_metrics
+from .foamcase import BALANCES, ENV_SCRIPT, time_directories
+from .post import BeadMetrics, post_process, read_function_object_metrics, summary
+from .steady import case_steadiness
 
 #: Dictionary of the template's knobs, for parameters without a file
 CASE_PARAMETERS = "system/caseParameters"
@@ -75,11 +86,28 @@ class Member:
     error: str = ""
     wall_time: float = 0.0
     metrics: dict[str, float] = field(default_factory=dict)
+    #: Kept from an earlier run of the study (--resume)
+    resumed: bool = False
+    #: What ``ldna post --json`` reports at the member's last time, and
+    #: whether ``ldna steady`` judges its bead quasi-steady
+    post: dict = field(default_factory=dict)
+    steady: bool | None = None
+
+
+def latest_time(case: Path) -> float:
+    """The latest time a case has written (its first rank's when decomposed)."""
+    case = Path(case)
+    times = time_directories(case)
+    if (case / "processor0").is_dir():
+        times += time_directories(case / "processor0")
+    return max((float(t.name) for t in times), default=0.0)
 
 
 def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
-                 end_time: float | None = None, n_procs: int = 1) -> list[Member]:
-    """Copy the template once per grid point and set each member's values."""
+                 end_time: float | None = None, n_procs: int = 1,
+                 resume: bool = False) -> list[Member]:
+    """Copy the template once per grid point and set each member's values
+    (with ``resume``, keep a member that exists and only set its end time)."""
     template, study_dir = Path(template), Path(study_dir)
     if not (template / CASE_PARAMETERS).exists() and any(
             p.file == CASE_PARAMETERS for p in parameters):
@@ -90,6 +118,12 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
     for index, combination in enumerate(grid):
         name = f"member{index:03d}"
         path = study_dir / name
+        values = {p.name: v for p, v in zip(parameters, combination)}
+        if resume and (path / "system" / "controlDict").is_file():
+            if end_time is not None:
+                Case(path).set("system/controlDict", "endTime", f"{end_time:g}")
+            members.append(Member(name, values, path, resumed=True))
+            continue
         if path.exists():
             shutil.rmtree(path)
         case = Case.copy_of(template, path)
@@ -102,7 +136,7 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
         if n_procs > 1:
             case.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
             case.set("system/decomposeParDict", "coeffs/n", f"({n_procs} 1 1)")
-        members.append(Member(name, {p.name: v for p, v in zip(parameters, combination)}, path))
+        members.append(Member(name, values, path))
     return members
 
 
@@ -125,24 +159,41 @@ def _progress(done: float, total: int, label: str, started: float) -> None:
     sys.stderr.flush()
 
 
+def finished(case: Path, end_time: float) -> bool:
+    """Whether a case has written its end time: the solver stops at the
+    first step that ends within half a step of it (its balance table gives
+    the last step)."""
+    try:
+        times = Case(case).latest_table(*BALANCES)["Time"]
+        last_step = float(times[-1] - times[-2]) if len(times) > 1 else 0.0
+    except (FileNotFoundError, IndexError, ValueError, KeyError):
+        last_step = 0.0
+    return latest_time(case) >= end_time - 0.5 * last_step - 1e-9 * end_time
+
+
 def run_member(member: Member, parallel: bool, index: int, total: int, started: float) -> None:
-    """Run one member's Allrun and read its metrics."""
+    """Run one member's Allrun (or continue it) and read its metrics."""
     end_time = Case(member.path).scalar("system/controlDict", "endTime")
-    command = f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
     label = f"{member.name} " + " ".join(f"{k}={v}" for k, v in member.values.items())
+    returncode = 0
     begin = time.time()
-    with open(member.path / "log.Allrun", "w", encoding="utf-8") as log:
-        process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
-                                   stdout=log, stderr=subprocess.STDOUT)
-        while process.poll() is None:
-            fraction = min(1.0, _simulated_time(member.path) / end_time)
-            _progress(index + fraction, total, label, started)
-            time.sleep(POLL_SECONDS)
+    if not (member.resumed and finished(member.path, end_time)):
+        command = (f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
+                   + (" -resume" if member.resumed else ""))
+        with open(member.path / "log.Allrun", "a" if member.resumed else "w",
+                  encoding="utf-8") as log:
+            process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
+                                       stdout=log, stderr=subprocess.STDOUT)
+            while process.poll() is None:
+                fraction = min(1.0, _simulated_time(member.path) / end_time)
+                _progress(index + fraction, total, label, started)
+                time.sleep(POLL_SECONDS)
+            returncode = process.returncode
     member.wall_time = time.time() - begin
     solver_log = member.path / "log.ldnaFoam"
     log_text = solver_log.read_text(errors="replace") if solver_log.exists() else ""
-    finished = "\nEnd\n" in log_text or "Finalising parallel run" in log_text
-    member.status = "done" if process.returncode == 0 and finished else "failed"
+    member.status = ("done" if returncode == 0 and finished(member.path, end_time)
+                     else "failed")
     if member.status == "failed":
         member.error = failure_line(log_text or (member.path / "log.Allrun").read_text(
             errors="replace"))
@@ -150,7 +201,34 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
         row = read_function_object_metrics(member.path)[-1]
         member.metrics = {"time": float(row[0]),
                           **dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, map(float, row[1:])))}
+        collect_post(member)
     _progress(index + 1, total, label, started)
+
+
+def collect_post(member: Member) -> None:
+    """``ldna post`` (pictures, --json figures) and ``ldna steady`` of a finished member.
+
+    A member whose bead cannot be judged yet (too short a run) is not steady.
+    """
+    result, _, time_read = post_process(member.path)
+    member.post = summary(member.path, result, time_read)
+    try:
+        member.steady = case_steadiness(member.path).steady
+    except (ValueError, IndexError):
+        member.steady = False
+
+
+def write_json(members: list[Member], path: Path) -> Path:
+    """``{"runs": [...]}``: per member its values, status, end time, verdict and post figures."""
+    runs = []
+    for member in members:
+        post = {key: (None if isinstance(value, float) and math.isnan(value) else value)
+                for key, value in member.post.items()}
+        runs.append({"member": member.name, **member.values, "status": member.status,
+                     "error": member.error, "end_time_s": member.metrics.get("time"),
+                     "wall_time_s": member.wall_time, "steady": member.steady, **post})
+    path.write_text(json.dumps({"runs": runs}, indent=2) + "\n", encoding="utf-8")
+    return path
 
 
 def failure_line(log_text: str) -> str:
@@ -180,11 +258,14 @@ def write_csv(members: list[Member], path: Path) -> Path:
 
 
 def run_study(template: Path, study_dir: Path, parameters: list[Parameter],
-              end_time: float | None = None, n_procs: int = 1) -> tuple[list[Member], Path]:
-    """Make, run and collect a study; returns the members and the CSV path."""
-    members = make_members(template, study_dir, parameters, end_time, n_procs)
+              end_time: float | None = None, n_procs: int = 1,
+              resume: bool = False) -> tuple[list[Member], Path]:
+    """Make (or keep, with ``resume``), run and collect a study; returns the
+    members and the CSV path (results.json beside it)."""
+    members = make_members(template, study_dir, parameters, end_time, n_procs, resume)
     started = time.time()
     for index, member in enumerate(members):
         run_member(member, n_procs > 1, index, len(members), started)
     sys.stderr.write("\n")
+    write_json(members, Path(study_dir) / "results.json")
     return members, write_csv(members, Path(study_dir) / "results.csv")

@@ -168,7 +168,7 @@ def test_a_substrate_that_did_not_melt_is_lack_of_fusion(level0_mesh: Case,
                                                          hot_half_width: float | None) -> None:
     """The isotherm 0.1 mm above the surface, everywhere or only within 5 mm of
     the seam (cold beyond: columns without any crossing beside unfused ones):
-    nothing fused, the whole bead unbonded."""
+    nothing fused, the whole bead unbonded, the surface 100 K short of fusion."""
     case = level0_mesh
     x, y, z = case.field("C", "0").T
     above = 0.1e-3
@@ -183,6 +183,12 @@ def test_a_substrate_that_did_not_melt_is_lack_of_fusion(level0_mesh: Case,
     assert result.bonded_width == 0
     assert result.bead_width > 0
     assert result.unbonded_width == pytest.approx(result.bead_width, rel=TABLE_PRECISION)
+    # How near it came: the surface under the bead, linear between the
+    # centres below and above it, is GRADIENT * above short of fusion
+    surface = fusion_temperature(case) - GRADIENT * above
+    print(f"peak surface temperature {result.peak_surface_temperature:.6f} K, "
+          f"prescribed {surface:.6f} K")
+    assert result.peak_surface_temperature == pytest.approx(surface, abs=1e-6)
 
 
 def test_fusion_line_on_two_ranks(level0_mesh: Case, tmp_path: Path) -> None:

@@ -60,6 +60,8 @@ class BeadMetrics:
     fused_section: float = 0.0
     bonded_width: float = 0.0
     unbonded_width: float = 0.0
+    #: Highest temperature of the substrate surface [K]: how near the bond came
+    peak_surface_temperature: float = 0.0
     #: Base metal's share of the bead section's metal (two metals; NaN with one)
     chemical_dilution: float = math.nan
     #: Secant angle of the bead's flanks at the toes [deg] (post only)
@@ -70,7 +72,7 @@ class BeadMetrics:
         "pool_length", "pool_width", "penetration", "pool_volume", "bead_width",
         "bead_height", "bead_area", "fused_area", "dilution", "peak_temperature",
         "bead_section", "fused_section", "bonded_width", "unbonded_width",
-        "chemical_dilution",
+        "peak_surface_temperature", "chemical_dilution",
     )
 
     def as_dict(self) -> dict[str, float]:
@@ -390,6 +392,7 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "unbonded_width_mm": 1e3 * result.unbonded_width,
         "bead_section_mm": 1e3 * result.bead_section,
         "peak_metal_temperature_K": result.peak_temperature,
+        "peak_surface_temperature_K": result.peak_surface_temperature,
         "bead_arrival_s": bead_arrival_time(case, result.bead_section),
         "steady_start": started_from_estimate(case),
     }
@@ -568,6 +571,7 @@ def format_metrics(result: BeadMetrics) -> str:
         (f"chemical dilut.  {100 * result.chemical_dilution:8.2f} %"
          if not math.isnan(result.chemical_dilution) else "chemical dilut.       n/a (one metal)"),
         f"peak metal T     {result.peak_temperature:8.1f} K",
+        f"peak surface T   {result.peak_surface_temperature:8.1f} K",
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
         f"deepest fusion x {1e3 * result.fused_section:8.2f} mm",
         f"wetting angle    {result.wetting_angle:8.1f} deg",

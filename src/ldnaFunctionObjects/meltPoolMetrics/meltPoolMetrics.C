@@ -364,6 +364,7 @@ Foam::functionObjects::meltPoolMetrics::calculate()
     m.penetration = fusionLine_->penetration();
     m.fusedArea = fusionLine_->area();
     m.fusedSection = fusionLine_->deepestSection();
+    m.peakSurfaceTemperature = fusionLine_->peakSurfaceTemperature();
 
     // The bead section: given, or the slice of largest bead area
     const label beadSlice =
@@ -507,7 +508,7 @@ void Foam::functionObjects::meltPoolMetrics::writeFileHeader(Ostream& os)
             "poolLength", "poolWidth", "penetration", "poolVolume",
             "beadWidth", "beadHeight", "beadArea", "fusedArea", "dilution",
             "peakTemperature", "beadSection", "fusedSection", "bondedWidth",
-            "unbondedWidth"
+            "unbondedWidth", "peakSurfaceTemperature"
         }
     )
     {
@@ -601,7 +602,7 @@ bool Foam::functionObjects::meltPoolMetrics::write()
                 m.poolLength, m.poolWidth, m.penetration, m.poolVolume,
                 m.beadWidth, m.beadHeight, m.beadArea, m.fusedArea,
                 m.dilution, m.peakTemperature, m.beadSection, m.fusedSection,
-                m.bondedWidth, m.unbondedWidth
+                m.bondedWidth, m.unbondedWidth, m.peakSurfaceTemperature
             }
         )
         {

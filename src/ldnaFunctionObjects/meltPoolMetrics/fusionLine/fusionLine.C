@@ -40,10 +40,13 @@ void Foam::fusionLine::addLink
     const point& b,
     const scalar Ta,
     const scalar Tb,
-    const bool metal,
-    DynamicList<vector>& records
+    const bool metalA,
+    const bool metalB,
+    DynamicList<vector>& records,
+    scalar& surfaceT
 ) const
 {
+    const bool metal = metalA && metalB;
     const vector d = b - a;
     const scalar rise = d & verticalDir_;
     if (mag(rise) < Foam::cos(verticalLinkAngle)*mag(d))
@@ -62,8 +65,15 @@ void Foam::fusionLine::addLink
     // The column passes the surface: it exists, crossed or not
     if (vLow < surfaceHeight_ && vHigh >= surfaceHeight_)
     {
-        const point p = low + ((surfaceHeight_ - vLow)/mag(rise))*(aBelow ? d : -d);
+        const scalar lambda = (surfaceHeight_ - vLow)/mag(rise);
+        const point p = low + lambda*(aBelow ? d : -d);
         records.append(vector(p & transverseDir_, -GREAT, p & weldDir_));
+
+        const bool metalLow = aBelow ? metalA : metalB;
+        if (metalLow)
+        {
+            surfaceT = max(surfaceT, metal ? Tlow + lambda*(Thigh - Tlow) : Tlow);
+        }
     }
 
     // The isotherm in metal, hot side up (the substrate is heated from above)
@@ -330,7 +340,8 @@ Foam::fusionLine::fusionLine
     shortestLink_(GREAT),
     penetration_(0),
     deepestSection_(0),
-    area_(0)
+    area_(0),
+    peakSurfaceTemperature_(0)
 {
     // The shortest vertical link sets the tolerance of a column
     const vectorField& C = mesh_.C();
@@ -365,13 +376,17 @@ void Foam::fusionLine::update
     const labelUList& nei = mesh_.neighbour();
 
     DynamicList<vector> records;
+    scalar surfaceT = 0;
     forAll(nei, facei)
     {
         const label a = own[facei];
         const label b = nei[facei];
-        const bool metal =
-            alphac[a] >= metalThreshold && alphac[b] >= metalThreshold;
-        addLink(C[a], C[b], Tc[a], Tc[b], metal, records);
+        addLink
+        (
+            C[a], C[b], Tc[a], Tc[b],
+            alphac[a] >= metalThreshold, alphac[b] >= metalThreshold,
+            records, surfaceT
+        );
     }
 
     // Links across processor (and cyclic) faces, seen from both sides
@@ -398,12 +413,14 @@ void Foam::fusionLine::update
             (
                 C[celli], neighbourCentre[bFacei],
                 Tc[celli], neighbourT[bFacei],
-                alphac[celli] >= metalThreshold
-             && neighbourAlpha[bFacei] >= metalThreshold,
-                records
+                alphac[celli] >= metalThreshold,
+                neighbourAlpha[bFacei] >= metalThreshold,
+                records, surfaceT
             );
         }
     }
+
+    peakSurfaceTemperature_ = returnReduce(surfaceT, maxOp<scalar>());
 
     List<List<vector>> all(Pstream::nProcs());
     all[Pstream::myProcNo()].transfer(records);

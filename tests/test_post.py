@@ -209,11 +209,12 @@ def test_post_writes_pictures_headless(synthetic_pool_case: Case) -> None:
 
 
 def test_function_object_and_post_agree_on_a_run(ldna_case: Case) -> None:
-    """The LDNA template, run briefly: metrics written in the run and read by post agree."""
+    """The LDNA template, run briefly: metrics written in the run and read by
+    post agree, at the last written time and at an earlier one."""
     case = ldna_case
     end_time = "0.03"
     case.set("system/controlDict", "endTime", end_time)
-    case.set("system/controlDict", "writeInterval", end_time)
+    case.set("system/controlDict", "writeInterval", f"{float(end_time) / 2:g}")
     case.set("system/controlDict", "writePrecision", "12")
     # The bead section under the droplets: they have not reached the
     # template's section downstream yet
@@ -235,13 +236,16 @@ def test_function_object_and_post_agree_on_a_run(ldna_case: Case) -> None:
     case.run("setFields")
     case.run("ldnaFoam")
 
-    written = function_object_result(case)
-    computed = function_object_metrics(case, float(end_time),
-                                       bead_section=configured_bead_section(case))
-    print(f"function object: {written}\nldna post:       {computed}")
-    assert written.bead_area > 0, "the droplets have built some bead"
-    assert written.penetration > 0 and written.pool_length > 0, "the preset pool is still liquid"
-    check_agreement(written, computed)
+    rows = read_function_object_metrics(case)
+    for time in (float(end_time) / 2, float(end_time)):
+        row = rows[np.argmin(np.abs(rows[:, 0] - time))]
+        assert row[0] == pytest.approx(time)
+        written = BeadMetrics(**dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, row[1:])))
+        computed = function_object_metrics(case, time, bead_section=configured_bead_section(case))
+        print(f"t = {time} s\nfunction object: {written}\nldna post:       {computed}")
+        assert written.bead_area > 0, "the droplets have built some bead"
+        assert written.penetration > 0 and written.pool_length > 0, "the preset pool is still liquid"
+        check_agreement(written, computed)
 
 
 #: Columns across the synthetic circular-cap bead (width 2 a) of the wetting-angle test

@@ -253,13 +253,16 @@ functions
     }}
 }}
 """)
-    shutil.rmtree(case / "postProcessing" / POST_FUNCTION / time_name, ignore_errors=True)
+    # Its tables go to a folder named by the case's start time, which with
+    # startFrom latestTime is not the time read: clear them all, so that
+    # the one table written (and its fusion line) is this time's
+    output = case / "postProcessing" / POST_FUNCTION
+    shutil.rmtree(output, ignore_errors=True)
     fields = "T alpha.metal" + (" fillerFraction" if two_metals(case) else "")
     command = (f"postProcess -dict system/{POST_FUNCTION} -fields '({fields})' "
                f"-time {time_name}")
     case.run(command, n_procs=n_procs, log_name=POST_FUNCTION)
-    # This time's row only: earlier calls left the rows of other times
-    table = case / "postProcessing" / POST_FUNCTION / time_name / "meltPoolMetrics.dat"
+    (table,) = output.glob("*/meltPoolMetrics.dat")
     row = np.loadtxt(table, comments="#", ndmin=2)[-1]
     return BeadMetrics(**dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, map(float, row[1:]))))
 

@@ -6,7 +6,7 @@
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "checkedInput.H"
-#include "syncTools.H"
+#include "cellLinks.H"
 #include "ListListOps.H"
 #include <algorithm>
 #include "addToRunTimeSelectionTable.H"
@@ -233,50 +233,15 @@ void Foam::functionObjects::meltPoolMetrics::forAllLinks
     const LinkOp& op
 ) const
 {
-    const vectorField& C = mesh_.C();
-    const scalarField& Tc = T.primitiveField();
-    const scalarField& alphac = alpha.primitiveField();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-
-    forAll(nei, facei)
-    {
-        const label a = own[facei];
-        const label b = nei[facei];
-        op
-        (
-            weldFrame(C[a]), weldFrame(C[b]),
-            Tc[a], Tc[b], alphac[a], alphac[b]
-        );
-    }
-
-    const label nInternal = mesh_.nInternalFaces();
-    const labelUList& faceCells = mesh_.faceOwner();
-    pointField neighbourCentre;
-    scalarField neighbourT;
-    scalarField neighbourAlpha;
-    syncTools::swapBoundaryCellPositions(mesh_, C, neighbourCentre);
-    syncTools::swapBoundaryCellList(mesh_, Tc, neighbourT);
-    syncTools::swapBoundaryCellList(mesh_, alphac, neighbourAlpha);
-    for (const polyPatch& patch : mesh_.boundaryMesh())
-    {
-        if (!patch.coupled())
+    ldna::forAllCellLinks
+    (
+        mesh_, T.primitiveField(), alpha.primitiveField(),
+        [&](const point& a, const point& b, const scalar Ta, const scalar Tb,
+            const scalar alphaA, const scalar alphaB)
         {
-            continue;
+            op(weldFrame(a), weldFrame(b), Ta, Tb, alphaA, alphaB);
         }
-        forAll(patch, i)
-        {
-            const label facei = patch.start() + i;
-            const label bFacei = facei - nInternal;
-            const label celli = faceCells[facei];
-            op
-            (
-                weldFrame(C[celli]), weldFrame(neighbourCentre[bFacei]),
-                Tc[celli], neighbourT[bFacei],
-                alphac[celli], neighbourAlpha[bFacei]
-            );
-        }
-    }
+    );
 }
 
 

@@ -4,7 +4,7 @@
 
 #include "fusionLine.H"
 #include "volFields.H"
-#include "syncTools.H"
+#include "cellLinks.H"
 #include "ListListOps.H"
 #include "SubList.H"
 #include <algorithm>
@@ -369,56 +369,22 @@ void Foam::fusionLine::update
     const scalar metalThreshold
 )
 {
-    const vectorField& C = mesh_.C();
-    const scalarField& Tc = T.primitiveField();
-    const scalarField& alphac = alpha.primitiveField();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-
     DynamicList<vector> records;
     scalar surfaceT = 0;
-    forAll(nei, facei)
-    {
-        const label a = own[facei];
-        const label b = nei[facei];
-        addLink
-        (
-            C[a], C[b], Tc[a], Tc[b],
-            alphac[a] >= metalThreshold, alphac[b] >= metalThreshold,
-            records, surfaceT
-        );
-    }
-
-    // Links across processor (and cyclic) faces, seen from both sides
-    const label nInternal = mesh_.nInternalFaces();
-    const labelUList& boundaryCells = mesh_.faceOwner();
-    pointField neighbourCentre;
-    scalarField neighbourT;
-    scalarField neighbourAlpha;
-    syncTools::swapBoundaryCellPositions(mesh_, C, neighbourCentre);
-    syncTools::swapBoundaryCellList(mesh_, Tc, neighbourT);
-    syncTools::swapBoundaryCellList(mesh_, alphac, neighbourAlpha);
-    for (const polyPatch& patch : mesh_.boundaryMesh())
-    {
-        if (!patch.coupled())
+    ldna::forAllCellLinks
+    (
+        mesh_, T.primitiveField(), alpha.primitiveField(),
+        [&](const point& a, const point& b, const scalar Ta, const scalar Tb,
+            const scalar alphaA, const scalar alphaB)
         {
-            continue;
-        }
-        forAll(patch, i)
-        {
-            const label facei = patch.start() + i;
-            const label bFacei = facei - nInternal;
-            const label celli = boundaryCells[facei];
             addLink
             (
-                C[celli], neighbourCentre[bFacei],
-                Tc[celli], neighbourT[bFacei],
-                alphac[celli] >= metalThreshold,
-                neighbourAlpha[bFacei] >= metalThreshold,
+                a, b, Ta, Tb,
+                alphaA >= metalThreshold, alphaB >= metalThreshold,
                 records, surfaceT
             );
         }
-    }
+    );
 
     peakSurfaceTemperature_ = returnReduce(surfaceT, maxOp<scalar>());
 

@@ -27,6 +27,8 @@ TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
 #: Relative cell-volume difference of the gmsh and block meshes: both place
 #: the same uniform points, written with the case's 8 significant digits
 GMSH_VOLUME_TOLERANCE = 1e-7
+#: The fusion skin's splits in the mesh test (the template's default is 0)
+SKIN_LEVEL = 2
 #: Cubic cells: edge lengths of the refined cells equal within this
 CUBE_TOLERANCE = 0.02
 #: Simulated time of the run on the gmsh mesh [s] (a few steps)
@@ -60,6 +62,7 @@ def zone_mask(centres: np.ndarray, p: dict[str, float], shrink: float) -> np.nda
 @pytest.mark.parametrize("level", [0, 1])
 def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Case, level: int) -> None:
     ldna_case.set("system/caseParameters", "level", str(level))
+    ldna_case.set("system/caseParameters", "skinLevel", str(SKIN_LEVEL))
     n_cells = meshing.mesh_case(ldna_case)
     checked = ldna_case.run("checkMesh", check=False)
     assert "Mesh OK" in checked.output

@@ -12,7 +12,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import pytest
 
+from ldna.balance import metal_mass_balance
 from ldna.case import Case
 
 #: Where the interrupted run stops, and where both runs end [s]
@@ -60,3 +62,55 @@ def test_restart_equals_uninterrupted_run(ldna_case: Case, tmp_path: Path) -> No
         difference = np.abs(a - b).max() / scale
         print(f"{field}: largest difference {difference:.3e} of its scale {scale:.4g}")
         assert difference < FIELD_TOLERANCE
+
+
+#: The metal's budget of a run, as the stability tests hold it: 0.5 % of the
+#: turnover
+MASS_TOLERANCE = 5e-3
+
+
+def test_a_run_starts_from_another_runs_state(ldna_case: Case, tmp_path: Path) -> None:
+    """``Allrun -start-from RUN`` (a steady neighbour for a study member):
+    the case meshes itself, takes RUN's fields at RUN's latest time, mapped
+    onto its mesh (here the same mesh, so exactly), starts at that time and
+    keeps the metal's budget from there."""
+    source = ldna_case
+    prepare(source)
+    source.set("system/controlDict", "endTime", STOP_TIME)
+    source.run("ldnaFoam")
+
+    member = Case.copy_of(source, tmp_path / "member")
+    member.set("system/controlDict", "endTime", END_TIME)
+    member.run(f"./Allrun -start-from {source.path}", log_name="Allrun")
+
+    assert f"Create mesh for time = {STOP_TIME}" in (member / "log.ldnaFoam").read_text(), \
+        "the member did not start at the source's time"
+    balances = member.balances()
+    assert float(balances["time"][0]) == float(STOP_TIME)
+    # The member's first state is the source's last: same metal, same heat
+    source_end = source.balances()[-1]
+    assert float(balances["metal_mass"][0]) == pytest.approx(float(source_end["metal_mass"]),
+                                                            rel=1e-12)
+    assert float(balances["enthalpy"][0]) == pytest.approx(float(source_end["enthalpy"]),
+                                                          rel=1e-9)
+    for field in ("alpha.metal", "T"):
+        np.testing.assert_allclose(member.field(field, STOP_TIME),
+                                   source.field(field, STOP_TIME), rtol=1e-12, atol=1e-15)
+    # From there on the member conserves metal as any run does
+    budget = metal_mass_balance(member)
+    print(f"member's metal budget: {budget.residual:.3e} kg, "
+          f"{100 * budget.relative_residual:.2e} % of the turnover")
+    assert budget.added > 0, "the member's wires fed no metal"
+    assert budget.relative_residual < MASS_TOLERANCE
+
+
+def test_start_from_a_run_without_a_time_is_refused(ldna_case: Case, tmp_path: Path) -> None:
+    """A start state that does not exist stops the Allrun with a message
+    naming the run, before anything is meshed."""
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    result = ldna_case.run(f"./Allrun -start-from {empty}", log_name="Allrun", check=False)
+    log = (ldna_case / "log.Allrun").read_text()
+    assert result.returncode != 0
+    assert str(empty) in log and "no reconstructed time" in log
+    assert not (ldna_case / "log.blockMesh").exists(), "it meshed before refusing"

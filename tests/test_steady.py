@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import subprocess
 import sys
 
@@ -10,9 +11,10 @@ import numpy as np
 import pytest
 
 from ldna.case import Case
-from ldna.steady import (JUDGING_INTERVAL, METRICS, MIN_WINDOW, NOISE_CAP, RELATIVE_TOLERANCE,
-                         SCALES, WINDOWS, averaging_window, first_steady, judge, ripple_period,
-                         window_mean)
+from ldna.steady import (BALANCE_TOLERANCE, JUDGING_INTERVAL, METRICS, MIN_WINDOW, NOISE_CAP,
+                         RELATIVE_TOLERANCE, SCALES, WINDOWS, DomainBalance, averaging_window,
+                         first_steady, judge, ripple_period, window_mean)
+from ldna import steady as steady_module
 
 #: A bead of mean section 35 mm2 whose area swings by 10 % with a period
 #: longer than the shortest window (as the template's bead: 0.6-0.7 s)
@@ -52,8 +54,9 @@ def test_the_window_is_whole_ripple_periods() -> None:
     assert ripple_period(times, areas, 0.0) == pytest.approx(PERIOD, rel=1e-2)
     assert averaging_window(times, areas, 0.0) == pytest.approx(PERIOD, rel=1e-2)
     # A short ripple: as many periods as make the shortest window
-    short = sampled(4.0, period=0.2)
-    assert averaging_window(*short, 0.0) == pytest.approx(0.6, rel=1e-2)
+    short = sampled(4.0, period=0.1)
+    assert averaging_window(*short, 0.0) == pytest.approx(
+        0.1 * math.ceil(MIN_WINDOW / 0.1), rel=1e-2)
     # No ripple: the shortest window
     assert averaging_window(times, np.full_like(times, MEAN_AREA), 0.0) == MIN_WINDOW
 
@@ -162,6 +165,61 @@ def test_too_short_or_empty_is_not_steady() -> None:
     assert judge(times, table).steady
 
 
+#: The template's throughput: 2.08 g/s of metal from the wires, 3.4 kW of heat
+FEED = 2.08e-3
+HEAT = 3.4e3
+
+
+def domain(end: float, mass_drift: float = 0.0, heat_drift: float = 0.0) -> DomainBalance:
+    """A domain that holds 50 g and 8.1 kJ, changing by the given shares of
+    its throughput, with the droplets' steps (a droplet of the feed every 5 ms
+    in, as much out at random) on its mass; wires feed FEED at HEAT."""
+    rng = np.random.default_rng(5)
+    times = np.arange(0.0, end, 2e-4)
+    droplets = FEED * 5e-3 * (np.floor(times / 5e-3) - np.floor(
+        times / 5e-3 + rng.uniform(0.0, 1.0, times.size)))
+    mass = 50e-3 + mass_drift * FEED * times + droplets
+    enthalpy = 8.1e3 + heat_drift * HEAT * times
+    fed = FEED * times
+    # Without the laser, the droplets bring all the heat
+    return DomainBalance(times, mass, enthalpy, times, fed, fed * HEAT / FEED,
+                         np.zeros(0), np.zeros(0))
+
+
+@pytest.mark.unit
+@pytest.mark.parametrize("mass_drift, heat_drift, steady", [
+    (0.0, 0.0, True), (0.5 * BALANCE_TOLERANCE, -0.5 * BALANCE_TOLERANCE, True),
+    (2 * BALANCE_TOLERANCE, 0.0, False), (0.0, -2 * BALANCE_TOLERANCE, False),
+    (1.0, 1.0, False)])
+def test_the_domain_must_stop_filling_and_heating(mass_drift: float, heat_drift: float,
+                                                   steady: bool) -> None:
+    """Over the judged windows the domain's metal and heat may change by
+    BALANCE_TOLERANCE of what flows through; a flat start fills at the feed
+    (share 1), a hot start cools.  The section's metrics are steady here, so
+    the balance alone decides."""
+    times, table = bead(4.0)
+    balance = domain(4.0, mass_drift, heat_drift)
+    drift = balance.drift(4.0 - 1.0, 4.0)
+    assert drift.mass_throughput == pytest.approx(FEED, rel=1e-9)
+    assert drift.heat_throughput == pytest.approx(HEAT, rel=1e-9)
+    assert drift.mass_rate / FEED == pytest.approx(mass_drift, abs=2e-3)
+    assert drift.enthalpy_rate / HEAT == pytest.approx(heat_drift, abs=1e-9)
+    verdict = judge(times, table, balance=balance)
+    assert verdict.steady is steady, verdict.reason
+    if not steady:
+        assert "the domain's metal and heat" in verdict.reason
+    assert judge(times, table).steady, "without the balance the section alone passes"
+
+
+@pytest.mark.unit
+def test_totals_since_each_restart_continue() -> None:
+    """A restart's droplet table counts its added metal from 0 again."""
+    first_run = np.array([0.0, 1.0, 2.0, 3.0])
+    second_run = np.array([0.5, 1.5, 2.5])
+    continued = steady_module._continued(np.concatenate([first_run, second_run]))
+    np.testing.assert_allclose(continued, [0.0, 1.0, 2.0, 3.0, 3.5, 4.5, 5.5])
+
+
 def test_a_run_still_growing_is_not_steady(ldna_case: Case) -> None:
     """The template's first 40 ms, judged at the section under the droplets with
     four windows of 8 ms: the bead there grows with every droplet, so the tool
@@ -183,6 +241,11 @@ def test_a_run_still_growing_is_not_steady(ldna_case: Case) -> None:
     area = verdict.metrics["bead_area"]
     assert area.mean > area.previous_mean > 0, "the deposit under the droplets grows"
     assert not verdict.steady and "bead_area" in verdict.reason
+    # Nothing leaves the domain in 40 ms: it gains what the wires feed
+    balance = verdict.balance
+    assert balance is not None and not balance.steady
+    assert balance.mass_rate == pytest.approx(balance.mass_throughput, rel=0.05)
+    assert "the domain's metal and heat" in verdict.reason
     # The command line says the same
     output = subprocess.run([sys.executable, "-m", "ldna.cli", "steady", str(case), "--json"],
                             capture_output=True, text=True, check=True).stdout

@@ -46,9 +46,14 @@ def _study(args: argparse.Namespace) -> int:
     from . import study
 
     parameters = [study.Parameter.parse(text) for text in args.set]
+    if args.start_time is not None and args.start_from is None:
+        print("ldna study: --start-time needs --start-from", file=sys.stderr)
+        return 2
+    start = None if args.start_from is None else study.StartFrom(Path(args.start_from),
+                                                                 args.start_time)
     members, table = study.run_study(Path(args.template), Path(args.study_dir), parameters,
                                      end_time=args.end_time, n_procs=args.np,
-                                     resume=args.resume)
+                                     resume=args.resume, start=start)
     failed = [m.name for m in members if m.status != "done"]
     print(f"{len(members)} members, {len(failed)} failed; results: {table} "
           f"and {table.with_suffix('.json')}")
@@ -82,8 +87,9 @@ def _steady(args: argparse.Namespace) -> int:
     from . import steady
 
     times, table, arrival = steady.case_table(Path(args.case), args.section)
-    verdict = steady.judge(times, table, arrival)
-    first = steady.first_steady(times, table, arrival)
+    balance = steady.DomainBalance.of(Path(args.case))
+    verdict = steady.judge(times, table, arrival, balance=balance)
+    first = steady.first_steady(times, table, arrival, balance=balance)
     if args.json:
         print(json.dumps({**verdict.as_dict(), "first_steady_s": first}))
     else:
@@ -257,6 +263,12 @@ def build_parser() -> argparse.ArgumentParser:
                        help="keep the members that exist and continue each from its latest "
                             "written time (--end-time may be raised); finished ones are only "
                             "collected")
+    study.add_argument("--start-from", type=_case, metavar="RUN",
+                       help="start every member from this run's state (a steady run of the "
+                            "scene: the members relax from it instead of from the flat "
+                            "substrate), mapped onto its mesh; --end-time past its time")
+    study.add_argument("--start-time", type=_positive_float, metavar="T",
+                       help="the reconstructed time of --start-from [its latest]")
     study.set_defaults(func=_study)
 
     accuracy = commands.add_parser(

@@ -22,9 +22,23 @@ its upward crossings of its mean, times the whole number that reaches
 after the bead reached the section (``start``), and the section must hold
 a bead.
 
+The section's metrics cannot see the slowest part of the weld: the
+substrate under and around the pool heats up (or, from too hot a start,
+cools down) over the seconds the workpiece takes to pass the pool, while a
+section's metrics may already sit on a plateau.  So the domain's own
+balance is judged too (``DomainBalance``): over the judged windows its
+metal mass and total enthalpy may change by at most ``BALANCE_TOLERANCE``
+of what flows through it (the wires' metal; its enthalpy above the ambient
+plus the laser's absorbed power).  In the template's run from a flat
+substrate the enthalpy still rose by 1.2 kW (of 3.4 kW brought in) at
+2.6 s, when 0.25 s windows of the section's metrics already passed; it
+settled within 1.5 % from 3.75 s on (docs/validation/steady-start.md).
+
 The metrics are those the ``meltPoolMetrics`` function object writes every
-few steps (``postProcessing/<name>/*/meltPoolMetrics.dat``): the judgement
-needs no fields and works on a run that is still going.
+few steps (``postProcessing/<name>/*/meltPoolMetrics.dat``), the balance
+the solver's ``balances`` table, the wires' ``droplets`` and the laser's
+``power`` tables: the judgement needs no fields and works on a run that is
+still going.
 """
 from __future__ import annotations
 
@@ -35,9 +49,22 @@ from pathlib import Path
 import numpy as np
 
 from . import post
+from .balance import wire_table
+from .case import Case
+from .material import Metal
 
-#: Shortest averaging window [s]: the template's ripple period is 0.56-0.7 s
-MIN_WINDOW = 0.5
+#: Shortest averaging window [s].  In the template's run from a flat
+#: substrate (3-5.6 s) the section's metrics lose their autocorrelation
+#: within 0.07-0.35 s (integral times 0.02-0.09 s), so means over 0.25 s
+#: are nearly independent; what changes more slowly is the substrate's
+#: heat, which the domain's balance judges
+MIN_WINDOW = 0.25
+#: Over the judged windows the domain's metal mass and enthalpy change by at
+#: most this share of what flows through it (mass: the wires' feed; heat:
+#: their enthalpy above the ambient plus the laser's absorbed power).  The
+#: template's flat run: within 1.5 % from 3.75 s on, 35 % at 2.6 s; the
+#: run from the first estimate (too hot) lost 2.6-8 % throughout its 2.7 s
+BALANCE_TOLERANCE = 0.02
 #: Two consecutive window means agree within this share of the last one, or
 #: of the macro-section's own size in that direction (``SCALES``): a metric
 #: far smaller than the bead (a thin bond's penetration, a sporadic fusion
@@ -49,6 +76,10 @@ RELATIVE_TOLERANCE = 0.01
 #: pass 95 % of the time)
 WINDOWS = 4
 NOISE_SIGMAS = 4.303
+#: A judged stretch shorter than this [s] whose bead area shows no ripple
+#: period yet (three upward crossings of its trend) may ripple more slowly
+#: than the windows, which would then take the ripple for noise: too short
+UNRESOLVED_SPAN = 2 * WINDOWS * MIN_WINDOW
 #: The noise allowance is at most this share of the metric (or of the
 #: bead's size): the largest scatter of the template's 0.5 s window means
 #: once its bead stopped growing (bead area at 11 mm behind the wires,
@@ -84,14 +115,21 @@ def window_mean(times: np.ndarray, values: np.ndarray, start: float, end: float)
 
 def ripple_period(times: np.ndarray, values: np.ndarray, start: float) -> float | None:
     """The ripple's period [s] after ``start``: the median spacing of the
-    values' upward crossings of their mean there; None with fewer than three
-    crossings."""
+    values' upward crossings of their trend there (their running mean over
+    ``WINDOWS`` shortest windows: a bead still growing ripples about its
+    trend); None with fewer than three crossings."""
     after = times >= start
     t, v = times[after], values[after]
-    if t.size < 3:
+    if t.size < 3 or not t[-1] > t[0]:
         return None
-    above = v > window_mean(t, v, t[0], t[-1])
-    crossings = t[1:][above[1:] & ~above[:-1]]
+    step = float(np.median(np.diff(t)))
+    uniform = np.arange(t[0], t[-1], step)
+    resampled = np.interp(uniform, t, v)
+    width = max(1, int(round(WINDOWS * MIN_WINDOW / step)))
+    padded = np.pad(resampled, (width // 2, width - 1 - width // 2), mode="edge")
+    trend = np.convolve(padded, np.ones(width) / width, mode="valid")
+    above = resampled > trend
+    crossings = uniform[1:][above[1:] & ~above[:-1]]
     if crossings.size < 3:
         return None
     return float(np.median(np.diff(crossings)))
@@ -136,20 +174,141 @@ class Steadiness:
     end_time: float
     window: float
     metrics: dict[str, MetricSteadiness] = field(default_factory=dict)
+    #: The domain's balance over the windows (None: not judged)
+    balance: BalanceDrift | None = None
 
     def as_dict(self) -> dict:
-        """JSON-ready: every metric's means, change, tolerance and range."""
+        """JSON-ready: every metric's means, change, tolerance and range, and
+        the domain's balance."""
         return {"steady": self.steady, "reason": self.reason, "end_time_s": self.end_time,
                 "window_s": self.window,
                 "metrics": {name: {**asdict(m), "steady": m.steady}
-                            for name, m in self.metrics.items()}}
+                            for name, m in self.metrics.items()},
+                "balance": None if self.balance is None
+                else {**asdict(self.balance), "steady": self.balance.steady}}
+
+
+@dataclass
+class BalanceDrift:
+    """The domain's metal mass and enthalpy over the judged windows [SI]."""
+
+    #: Least-squares slopes of the domain's metal mass [kg/s] and total
+    #: enthalpy [W] over the windows
+    mass_rate: float
+    enthalpy_rate: float
+    #: What flows through: the wires' metal [kg/s], their enthalpy above the
+    #: ambient plus the laser's absorbed power [W]
+    mass_throughput: float
+    heat_throughput: float
+
+    @property
+    def steady(self) -> bool:
+        return bool(abs(self.mass_rate) <= BALANCE_TOLERANCE * self.mass_throughput
+                    and abs(self.enthalpy_rate) <= BALANCE_TOLERANCE * self.heat_throughput)
+
+
+def _slope(times: np.ndarray, values: np.ndarray) -> float:
+    if times.size < 2 or np.ptp(times) <= 0:
+        return float("nan")
+    return float(np.polyfit(times, values, 1)[0])
+
+
+@dataclass
+class DomainBalance:
+    """The tables a run writes that say whether its domain still fills or heats."""
+
+    #: Steps of the solver's balances table: time, metal mass, total enthalpy
+    times: np.ndarray
+    mass: np.ndarray
+    enthalpy: np.ndarray
+    #: Steps of the wires' tables: time, metal added since the start [kg] and
+    #: its enthalpy above the ambient [J]
+    wire_times: np.ndarray
+    added_mass: np.ndarray
+    added_enthalpy: np.ndarray
+    #: Steps of the laser's table: time and power absorbed [W] (empty without)
+    laser_times: np.ndarray
+    laser_power: np.ndarray
+
+    @classmethod
+    def of(cls, case: Path) -> "DomainBalance | None":
+        """The case's balance, or None without droplet sources or balances."""
+        case = Case(case)
+        try:
+            balances = case.balances()
+            wires = wire_table(case)
+        except (FileNotFoundError, KeyError, ValueError):
+            return None
+        if not wires:
+            return None
+        metal = Metal.from_case(case.path)
+        ambient = metal.enthalpy(_case_scalar(case, "system/caseParameters",
+                                              "ambientTemperature", 300.0))
+        wire_times = _first_wire_times(case)
+        added_mass = sum(table[:, 0] for table in wires.values())
+        added_enthalpy = sum(
+            table[:, 0] * (metal.enthalpy(_case_scalar(
+                case, "constant/fvOptions", f"wireDroplets/wires/{wire}/temperature",
+                _case_scalar(case, "system/caseParameters", "dropletTemperature",
+                             float("nan")))) - ambient)
+            for wire, table in wires.items())
+        try:
+            laser = case.table("laser", "power")
+            laser_times = laser["Time"]
+            laser_power = laser["absorbedMetal"] + laser["absorbedGas"]
+        except (FileNotFoundError, ValueError):
+            laser_times = laser_power = np.zeros(0)
+        return cls(balances["time"], balances["metal_mass"], balances["enthalpy"],
+                   wire_times, _continued(np.asarray(added_mass)),
+                   _continued(np.asarray(added_enthalpy)),
+                   np.asarray(laser_times), np.asarray(laser_power))
+
+    def drift(self, start: float, end: float) -> BalanceDrift | None:
+        """Rates and throughputs over [start, end]; None if a table does not cover it."""
+        inside = (self.times >= start) & (self.times <= end)
+        fed = (self.wire_times >= start) & (self.wire_times <= end)
+        if inside.sum() < 2 or fed.sum() < 2:
+            return None
+        t = self.wire_times[fed]
+        span = float(t[-1] - t[0])
+        mass_throughput = float(self.added_mass[fed][-1] - self.added_mass[fed][0]) / span
+        heat = float(self.added_enthalpy[fed][-1] - self.added_enthalpy[fed][0]) / span
+        lit = (self.laser_times >= start) & (self.laser_times <= end)
+        if lit.sum() > 1:
+            heat += window_mean(self.laser_times, self.laser_power, start, end)
+        return BalanceDrift(_slope(self.times[inside], self.mass[inside]),
+                            _slope(self.times[inside], self.enthalpy[inside]),
+                            mass_throughput, heat)
+
+
+def _case_scalar(case: Case, file: str, entry: str, default: float) -> float:
+    try:
+        return case.scalar(file, entry)
+    except (KeyError, ValueError):
+        return default
+
+
+def _continued(totals: np.ndarray) -> np.ndarray:
+    """Totals "since the start of the run" over runs that restarted: each
+    restart counts from 0 again, so a drop continues from the total before."""
+    steps = np.diff(totals, prepend=0.0)
+    restarted = steps < 0
+    steps[restarted] = totals[restarted]
+    return np.cumsum(steps)
+
+
+def _first_wire_times(case: Case) -> np.ndarray:
+    source = case.tables_named("droplets")[0]
+    return np.asarray(case.table(source, "droplets")["Time"], dtype=float)
 
 
 def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None = None,
-          min_window: float = MIN_WINDOW) -> Steadiness:
+          min_window: float = MIN_WINDOW, balance: DomainBalance | None = None) -> Steadiness:
     """Judge the metrics ``table`` (name -> values at ``times``) for steadiness.
 
-    ``start``: when the bead reached the section (default: the first time).
+    ``start``: when the bead reached the section (default: the first time);
+    ``balance``: the domain's, judged over the same windows (None: the
+    section's metrics alone).
     """
     start = float(times[0]) if start is None else max(float(start), float(times[0]))
     window = averaging_window(times, table["bead_area"], start, min_window)
@@ -174,20 +333,28 @@ def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None =
             tolerance=max(RELATIVE_TOLERANCE * size, min(noise, NOISE_CAP * size)),
             low=float(table[name][in_last].min()), high=float(table[name][in_last].max()),
             noise=noise)
+    drift = None if balance is None else balance.drift(end - WINDOWS * window, end)
     if end < start:
         verdict, reason = False, (f"the bead deposited by the run reaches the section at "
                                   f"{start:.3g} s, after this run's end")
     elif end - start < WINDOWS * window:
         verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival, "
                                   f"{WINDOWS} windows of {window:.3g} s needed")
+    elif (end - start < UNRESOLVED_SPAN
+          and ripple_period(times, table["bead_area"], start) is None):
+        verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival "
+                                  f"show no ripple period yet ({UNRESOLVED_SPAN:.3g} s "
+                                  "without one are needed)")
     elif not metrics["bead_area"].mean > 0:
         verdict, reason = False, "no bead at the section"
     else:
         changing = [n for n, m in metrics.items() if not m.steady]
+        if drift is not None and not drift.steady:
+            changing.append("the domain's metal and heat")
         verdict = not changing
         reason = ("every metric's drift within its tolerance" if verdict
                   else "still changing: " + ", ".join(changing))
-    return Steadiness(verdict, reason, end, window, metrics)
+    return Steadiness(verdict, reason, end, window, metrics, drift)
 
 
 #: Spacing of the end times at which ``first_steady`` judges a run [s]
@@ -195,7 +362,8 @@ JUDGING_INTERVAL = 0.05
 
 
 def first_steady(times: np.ndarray, table: dict[str, np.ndarray], start: float | None = None,
-                 min_window: float = MIN_WINDOW) -> float | None:
+                 min_window: float = MIN_WINDOW,
+                 balance: DomainBalance | None = None) -> float | None:
     """The first end time, every JUDGING_INTERVAL, at which the run up to it is
     judged quasi-steady (the time a run needed); None if never."""
     first = float(times[0]) if start is None else max(float(start), float(times[0]))
@@ -203,7 +371,7 @@ def first_steady(times: np.ndarray, table: dict[str, np.ndarray], start: float |
                          JUDGING_INTERVAL):
         upto = times <= end
         if upto.sum() > 2 and judge(times[upto], {n: v[upto] for n, v in table.items()},
-                                    start, min_window).steady:
+                                    start, min_window, balance).steady:
             return float(times[upto][-1])
     return None
 
@@ -225,9 +393,9 @@ def case_table(case: Path, section: str = "meltPoolMetrics"
 def case_steadiness(case: Path, section: str = "meltPoolMetrics",
                     min_window: float = MIN_WINDOW) -> Steadiness:
     """Judge the metrics that the function object ``section`` of ``case`` wrote,
-    from the bead's arrival at its section on."""
+    from the bead's arrival at its section on, with the domain's balance."""
     times, table, arrival = case_table(case, section)
-    return judge(times, table, arrival, min_window)
+    return judge(times, table, arrival, min_window, DomainBalance.of(case))
 
 
 def format_steadiness(verdict: Steadiness) -> str:
@@ -241,6 +409,12 @@ def format_steadiness(verdict: Steadiness) -> str:
         lines.append(f"{name:<14}{factor * m.mean:13.4g}{factor * m.previous_mean:15.4g}"
                      f"{factor * m.change:10.3g}{factor * m.tolerance:11.3g}  {unit}"
                      f"{'' if m.steady else '  changing'}")
+    if verdict.balance is not None:
+        b = verdict.balance
+        lines.append(f"domain: metal {1e3 * b.mass_rate:+.3g} g/s of {1e3 * b.mass_throughput:.3g} "
+                     f"fed, heat {b.enthalpy_rate:+.4g} W of {b.heat_throughput:.4g} brought in "
+                     f"(tolerance {100 * BALANCE_TOLERANCE:g} %)"
+                     f"{'' if b.steady else '  changing'}")
     lines.append(f"windows of {verdict.window:.3g} s to t = {verdict.end_time:.4g} s: "
                  f"{'quasi-steady' if verdict.steady else 'not steady'} ({verdict.reason})")
     return "\n".join(lines)

@@ -8,6 +8,12 @@ collects parameters, run time and the bead metrics of each member's last
 what ``ldna post --json`` reports at its last time (with its pictures in the
 member's ``pictures/``) and ``ldna steady``'s verdict.
 
+A study can start every member from the state of a steady run of the scene
+(``--start-from RUN [--start-time T]``, the template's ``Allrun -start-from``):
+each member then relaxes from a neighbouring weld instead of building its
+bead and heating its substrate from nothing, which takes seconds of welding
+(docs/validation/steady-start.md).
+
 Runs longer than a session resume: ``ldna study ... --resume`` with the same
 ``--set`` values keeps the members that exist, continues each from its
 latest written time (``Allrun -resume``; ``--end-time`` may be raised) and
@@ -171,7 +177,21 @@ def finished(case: Path, end_time: float) -> bool:
     return latest_time(case) >= end_time - 0.5 * last_step - 1e-9 * end_time
 
 
-def run_member(member: Member, parallel: bool, index: int, total: int, started: float) -> None:
+@dataclass(frozen=True)
+class StartFrom:
+    """The state every member starts from: a run of the scene and its
+    reconstructed time (None: its latest)."""
+
+    run: Path
+    time: float | None = None
+
+    def allrun_options(self) -> str:
+        return (f" -start-from '{self.run.resolve()}'"
+                + ("" if self.time is None else f" -start-time {self.time:g}"))
+
+
+def run_member(member: Member, parallel: bool, index: int, total: int, started: float,
+               start: StartFrom | None = None) -> None:
     """Run one member's Allrun (or continue it) and read its metrics."""
     end_time = Case(member.path).scalar("system/controlDict", "endTime")
     label = f"{member.name} " + " ".join(f"{k}={v}" for k, v in member.values.items())
@@ -179,7 +199,8 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
     begin = time.time()
     if not (member.resumed and finished(member.path, end_time)):
         command = (f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
-                   + (" -resume" if member.resumed else ""))
+                   + (" -resume" if member.resumed else
+                      start.allrun_options() if start else ""))
         with open(member.path / "log.Allrun", "a" if member.resumed else "w",
                   encoding="utf-8") as log:
             process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
@@ -259,13 +280,15 @@ def write_csv(members: list[Member], path: Path) -> Path:
 
 def run_study(template: Path, study_dir: Path, parameters: list[Parameter],
               end_time: float | None = None, n_procs: int = 1,
-              resume: bool = False) -> tuple[list[Member], Path]:
+              resume: bool = False,
+              start: StartFrom | None = None) -> tuple[list[Member], Path]:
     """Make (or keep, with ``resume``), run and collect a study; returns the
-    members and the CSV path (results.json beside it)."""
+    members and the CSV path (results.json beside it).  ``start``: the state
+    every new member starts from."""
     members = make_members(template, study_dir, parameters, end_time, n_procs, resume)
     started = time.time()
     for index, member in enumerate(members):
-        run_member(member, n_procs > 1, index, len(members), started)
+        run_member(member, n_procs > 1, index, len(members), started, start)
     sys.stderr.write("\n")
     write_json(members, Path(study_dir) / "results.json")
     return members, write_csv(members, Path(study_dir) / "results.csv")

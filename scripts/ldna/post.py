@@ -435,12 +435,14 @@ def render_surface(grid, path: Path, temperature_range: tuple[float, float]) -> 
 
 def render_section(grid, path: Path, normal: str, origin: tuple[float, float, float],
                    fusion_temperature_: float, temperature_range: tuple[float, float],
-                   title: str, outline: np.ndarray | None = None) -> Path:
+                   title: str, outline: np.ndarray | None = None,
+                   surface_height: float = 0.0) -> Path:
     """A plane section coloured by temperature, with the fusion line and free surface.
 
     ``outline``: (y, z) points of the fused zone in a transverse section
     (``fused_outline``), drawn as the fusion line; without it the fusion
-    isotherm is contoured in the section's plane.
+    isotherm is contoured in the section's plane below the substrate's
+    surface (``surface_height``).
     """
     section = grid.slice(normal=normal, origin=origin)
     plotter = _plotter()
@@ -450,14 +452,17 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
         fusion_lines = [_polyline(run, origin[0]) for run in _runs(outline)]
         fusion_label = "fusion line (pool's projection)"
     else:
-        # The isotherm bounds metal: gas, however hot, is left out
+        # The fusion isotherm bounds the substrate's molten metal: below its
+        # surface (the deposit above, however hot, is the pool's, whose own
+        # melting range differs), and gas is left out
+        substrate = section.clip(normal="z", origin=(0.0, 0.0, surface_height), invert=True)
         metal_temperature = np.where(
-            np.asarray(section.point_data["alpha.metal"]) >= METAL_THRESHOLD,
-            np.asarray(section.point_data["T"]), temperature_range[0])
-        section.point_data["metalT"] = metal_temperature
-        fusion_lines = [section.contour([fusion_temperature_], scalars="metalT",
-                                        preference="point")]
-        fusion_label = "fusion isotherm"
+            np.asarray(substrate.point_data["alpha.metal"]) >= METAL_THRESHOLD,
+            np.asarray(substrate.point_data["T"]), temperature_range[0])
+        substrate.point_data["metalT"] = metal_temperature
+        fusion_lines = [substrate.contour([fusion_temperature_], scalars="metalT",
+                                          preference="point")]
+        fusion_label = "fusion isotherm (substrate)"
     fusion_lines = [line for line in fusion_lines if line.n_points]
     free_surface = section.contour([0.5], scalars="alpha.metal", preference="point")
     if normal == "x":
@@ -533,10 +538,11 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
         render_section(grid, output / "transverse.png", "x", (x_section, centre[1], centre[2]),
                        t_fusion, temperature_range,
                        f"Transverse section x = {1e3 * x_section:.2f} mm, {time_label}",
-                       outline),
+                       outline, surface_height),
         render_section(grid, output / "longitudinal.png", "y", (centre[0], 0.0, centre[2]),
                        t_fusion, temperature_range,
-                       f"Longitudinal section y = 0, {time_label}"),
+                       f"Longitudinal section y = 0, {time_label}",
+                       surface_height=surface_height),
     ]
     with open(output / "metrics.csv", "w", encoding="utf-8") as stream:
         values = result.as_dict()

@@ -7,6 +7,7 @@ order fit is checked on errors that follow a known power of the cell size.
 from __future__ import annotations
 
 import csv
+import json
 import math
 from pathlib import Path
 
@@ -56,3 +57,64 @@ def test_order_fit_recovers_a_known_order(order: float) -> None:
     # The finest run is not exact: its own error biases the fit a little
     assert study.orders["pool_width"] == pytest.approx(order, rel=0.05)
     assert math.isnan(study.orders["penetration"])
+
+
+@pytest.mark.unit
+def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
+    """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
+    12 % and 4 % on the width, 3 % and 1 % on the height.  The cheapest level
+    within 5 % is 0.5 for the width and 0 for the height; within 10 %, 0.5 and
+    0; the reference itself is never 'within'."""
+    scene = accuracy.BeadScene()
+    reference = {"bead_width": 15e-3, "bead_height": 3e-3}
+    members = []
+    for level, cost, width_error, height_error in ((0.0, 1.0, 0.12, 0.03),
+                                                   (0.5, 3.0, 0.04, 0.01), (1.0, 9.0, 0, 0)):
+        member = accuracy.Member(level=level, max_co=None,
+                                 cell_size_mm=0.45 / 2**level, wall_time=cost, n_procs=1,
+                                 start_time=3.0, end_time=4.0, steady=True, first_steady=4.0)
+        member.outputs = {"bead_width": reference["bead_width"] * (1 + width_error),
+                          "bead_height": reference["bead_height"] * (1 - height_error)}
+        members.append(member)
+    members[-1].outputs = reference
+    study = accuracy.evaluate(scene, members, None)
+    cheapest = accuracy.cheapest_levels(study)
+    assert cheapest["bead_width"] == {"5%": 0.5, "10%": 0.5}
+    assert cheapest["bead_height"] == {"5%": 0.0, "10%": 0.0}
+    assert cheapest["penetration"] == {"5%": None, "10%": None}
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    written = json.loads((tmp_path / "accuracy.json").read_text())
+    first = written["levels"][0]
+    for key in ("level", "cell_mm", "cells", "core_hours_per_simulated_s",
+                "core_hours_to_steady", "steady", "bead_width_mm", "bead_height_mm"):
+        assert key in first
+    # One core for 1 s of wall time per simulated second, all of it to steady
+    assert first["core_hours_per_simulated_s"] == pytest.approx(1.0 / 3600)
+    assert first["core_hours_to_steady"] == pytest.approx(1.0 / 3600)
+    assert first["bead_width_mm"] == pytest.approx(15 * 1.12)
+    assert "finer than tested" in accuracy.markdown(study)
+
+
+def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
+    """The bead study's small version (``--scene bead``), levels 0 and 0.5 of
+    the template for 10 ms from the flat substrate: each level runs, is judged
+    (not steady: the deposit reaches the template's section, 11 mm behind the
+    wires at 7.5 mm/s, only after 1.47 s) and lands in the table, the plot and
+    accuracy.json; each conserves the metal the wires fed."""
+    from ldna.balance import metal_mass_balance
+
+    study, paths = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study",
+                                      accuracy.SCENES["bead"], levels=[0, 0.5],
+                                      end_time=0.01)
+    for path in paths:
+        assert path.stat().st_size > 0, path
+    written = json.loads((tmp_path / "study" / "accuracy.json").read_text())
+    assert [level["level"] for level in written["levels"]] == [0, 0.5]
+    for level, member in zip(written["levels"], study.members):
+        assert level["steady"] is False and "after this run's end" in level["verdict"]
+        assert level["cells"] == member.cells > 0
+        assert level["core_hours_per_simulated_s"] > 0
+        budget = metal_mass_balance(tmp_path / "study" / "members" / member.name)
+        assert budget.added > 0
+        assert budget.relative_residual < 5e-3
+    assert written["levels"][1]["cells"] > written["levels"][0]["cells"]

@@ -49,6 +49,9 @@ class Scene(Protocol):
     def prepare(self, case: Case) -> None:
         """Make the mesh and initial fields."""
 
+    def run(self, case: Case, member: "Member") -> None:
+        """Run the solver on the member's case (decomposed for its ranks)."""
+
     def outputs(self, case: Case) -> dict[str, float]:
         """Key outputs of a finished run, in SI units."""
 
@@ -85,6 +88,9 @@ class LdnaScene:
         case.mesh()
         case.run("setFields")
 
+    def run(self, case: Case, member: "Member") -> None:
+        case.run("ldnaFoam", member.n_procs)
+
     def outputs(self, case: Case) -> dict[str, float]:
         from .post import BeadMetrics, read_function_object_metrics
 
@@ -117,6 +123,79 @@ def largest_fraction_in_flight(case: Path) -> float:
     return float(alpha.max()) if alpha.size else math.nan
 
 
+class BeadScene(LdnaScene):
+    """The LDNA template's quasi-steady bead: each level runs until ``ldna
+    steady`` judges its bead quasi-steady (domain balance included), in
+    stretches of ``STRETCH`` after the first ``WINDOWS`` shortest windows,
+    at most to ``end_time``; its outputs are the window means of the last
+    judged windows (and the wetting angle at the last time).
+
+    Start every level from a steady run of the scene (``--start-from``): a
+    level then only relaxes to its own resolution's weld."""
+
+    name = "bead"
+    outputs_meta = {
+        "bead_width": ("bead width", "mm", 1e3),
+        "bead_height": ("bead height", "mm", 1e3),
+        "bead_area": ("bead area", "mm2", 1e6),
+        "wetting_angle": ("wetting angle", "deg", 1.0),
+        "bonded_width": ("bonded width", "mm", 1e3),
+        "penetration": ("penetration", "mm", 1e3),
+        "dilution": ("dilution", "-", 1.0),
+        "pool_length": ("melt-pool length", "mm", 1e3),
+    }
+    #: Simulated time added each time a level is judged not yet steady [s]
+    STRETCH = 0.25
+    #: Longest run of a level from its start without ``--end-time`` [s]: the
+    #: template from the estimate still drained at 2.7 s
+    MAX_SPAN = 3.0
+
+    def set_resolution(self, case: Case, level: float) -> float:
+        meshing.set_level(case, level)
+        return meshing.process_cell_size(level)
+
+    def run(self, case: Case, member: "Member") -> None:
+        from . import steady
+
+        control = "system/controlDict"
+        # Every stretch's end is written, so that a stopped study resumes
+        case.set(control, "writeInterval", f"{self.STRETCH:g}")
+        start = member.start_time
+        written = [float(t.name) for t in case.times]
+        if (case / "processor0").is_dir():
+            written += [float(t.name) for t in Case(case / "processor0").times]
+        # The first judgeable time, or where a resumed member stopped
+        target = max(start + steady.WINDOWS * steady.MIN_WINDOW, *written)
+        stop = member.end_time
+        target = min(self.STRETCH * math.ceil(target / self.STRETCH - 1e-9), stop)
+        while True:
+            case.set(control, "endTime", f"{target:g}")
+            case.run("ldnaFoam", member.n_procs, log_name=f"ldnaFoam.{target:g}")
+            # Later stretches continue from the latest written time
+            case.set(control, "startFrom", "latestTime")
+            verdict = steady.case_steadiness(case.path)
+            member.steady = verdict.steady
+            member.verdict = verdict.reason
+            if verdict.steady or target >= stop - 1e-9:
+                break
+            target = min(target + self.STRETCH, stop)
+        member.end_time = target
+        times, table, arrival = steady.case_table(case.path)
+        member.first_steady = steady.first_steady(times, table, max(arrival or 0.0, start),
+                                                  balance=steady.DomainBalance.of(case.path))
+
+    def outputs(self, case: Case) -> dict[str, float]:
+        from . import post, steady
+
+        verdict = steady.case_steadiness(case.path)
+        values = {name: verdict.metrics[name].mean for name in self.outputs_meta
+                  if name in verdict.metrics}
+        grid = post.read_case(case.path)
+        section = post.configured_bead_section(case.path)
+        values["wetting_angle"] = post.bead_wetting_angle(grid, section, 0.0)
+        return values
+
+
 class StefanScene:
     """``cases/stefanMelting``: the melting front against the Neumann solution."""
 
@@ -138,6 +217,9 @@ class StefanScene:
     def prepare(self, case: Case) -> None:
         case.run("blockMesh")
 
+    def run(self, case: Case, member: "Member") -> None:
+        case.run("ldnaFoam", member.n_procs)
+
     def outputs(self, case: Case) -> dict[str, float]:
         return {"front": front_position(case.path, case.times[-1].name)}
 
@@ -145,7 +227,8 @@ class StefanScene:
         return {"front": NeumannSolution.from_case(case.path).front(end_time)}
 
 
-SCENES: dict[str, Scene] = {"ldna": LdnaScene(), "stefan": StefanScene()}
+SCENES: dict[str, Scene] = {"ldna": LdnaScene(), "bead": BeadScene(),
+                            "stefan": StefanScene()}
 
 
 def detect_scene(case: Path) -> Scene:
@@ -176,6 +259,11 @@ class Member:
     end_time: float = math.nan
     outputs: dict[str, float] = field(default_factory=dict)
     errors: dict[str, float] = field(default_factory=dict)
+    #: Bead scene: judged quasi-steady at the end, why (not), and the first
+    #: time it was [s]
+    steady: bool | None = None
+    verdict: str = ""
+    first_steady: float | None = None
 
     @property
     def name(self) -> str:
@@ -190,6 +278,17 @@ class Member:
         without the timeInfo table, times the ranks."""
         seconds = self.wall_time if self.cpu_time is None else self.cpu_time
         return seconds * self.n_procs / ((self.end_time - self.start_time) * 1e3)
+
+    @property
+    def core_hours_per_simulated_s(self) -> float:
+        return self.core_seconds_per_ms * 1e3 / 3600
+
+    @property
+    def core_hours_to_steady(self) -> float | None:
+        """From the member's start to its first quasi-steady time, at its mean cost."""
+        if self.first_steady is None:
+            return None
+        return self.core_hours_per_simulated_s * (self.first_steady - self.start_time)
 
 
 @dataclass(frozen=True)
@@ -220,13 +319,24 @@ class StartState:
 
 def run_member(template: Path, directory: Path, scene: Scene, member: Member,
                end_time: float | None, n_procs: int,
-               start: StartState | None = None) -> Member:
-    """Copy, mesh and run one member; fill in its cost and outputs."""
+               start: StartState | None = None, resume: bool = False) -> Member:
+    """Copy, mesh and run one member; fill in its cost and outputs.  With
+    ``resume`` a member that has run before continues from its latest time."""
+    control = "system/controlDict"
+    if resume and (directory / control).is_file() and (
+            (directory / "processor0").is_dir() or len(Case(directory).times) > 1):
+        case = Case(directory)
+        member.cell_size_mm = scene.set_resolution(case, member.level)
+        member.start_time = case.scalar(control, "startTime")
+        case.set(control, "startFrom", "latestTime")
+        member.end_time = end_time if end_time is not None else case.scalar(control, "endTime")
+        member.cells = case.cells
+        member.n_procs = n_procs
+        return _run_and_measure(case, scene, member)
     if directory.exists():
         shutil.rmtree(directory)
     case = Case.copy_of(template, directory)
     member.cell_size_mm = scene.set_resolution(case, member.level)
-    control = "system/controlDict"
     if end_time is not None:
         case.set(control, "endTime", f"{end_time:g}")
     member.end_time = case.scalar(control, "endTime")
@@ -243,21 +353,24 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if start:
         start.map_onto(case)
     member.cells = case.cells
-
     member.n_procs = n_procs
     if n_procs > 1:
         case.decompose(n_procs)
+    return _run_and_measure(case, scene, member)
+
+
+def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
     began = time.perf_counter()
-    case.run("ldnaFoam", n_procs)
+    scene.run(case, member)
     member.wall_time = time.perf_counter() - began
     try:
         member.cpu_time = case.cpu_seconds()
     except FileNotFoundError:
         member.cpu_time = None
-    if n_procs > 1:
+    if member.n_procs > 1:
         case.reconstruct()
-    # Rows of the run's balance table: the initial state and one per step
-    member.steps = len(case.latest_table(*BALANCES)) - 1
+    # Rows of the runs' balance table: the initial state and one per step
+    member.steps = len(case.balances()) - 1
     member.outputs = scene.outputs(case)
     return member
 
@@ -300,6 +413,60 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         else:
             orders[name] = math.nan
     return Study(scene, members, reference, reference_name, orders)
+
+
+#: Error bounds a user picks a level for: the cheapest level within each
+ERROR_BOUNDS = (0.05, 0.10)
+
+
+def cheapest_levels(study: Study) -> dict[str, dict[str, float | None]]:
+    """Per output and error bound, the cheapest level (core-hours per simulated
+    second) whose error against the reference is within the bound; None when
+    only the reference itself is (a finer level than tested may be needed)."""
+    chosen: dict[str, dict[str, float | None]] = {}
+    for name in study.scene.outputs_meta:
+        chosen[name] = {}
+        for bound in ERROR_BOUNDS:
+            within = [m for m in study.members
+                      if math.isfinite(m.errors.get(name, math.nan))
+                      and m.errors[name] <= bound and m.outputs is not study.reference]
+            best = min(within, key=lambda m: m.core_seconds_per_ms, default=None)
+            chosen[name][f"{round(100 * bound)}%"] = None if best is None else best.level
+    return chosen
+
+
+def write_json(study: Study, path: Path) -> None:
+    """Per level its resolution, cost, steadiness and outputs (in the units of
+    the table) with their errors; the reference, the orders and the cheapest
+    level for each error bound."""
+    import json
+
+    meta = study.scene.outputs_meta
+
+    def unit_name(name: str) -> str:
+        return name + {"mm": "_mm", "mm2": "_mm2", "deg": "_deg", "K": "_K",
+                       "g": "_g"}.get(meta[name][1], "")
+
+    def finite(value: float | None) -> float | None:
+        return value if value is not None and math.isfinite(value) else None
+
+    levels = []
+    for m in study.members:
+        levels.append({
+            "level": m.level, "max_co": m.max_co, "cell_mm": m.cell_size_mm, "cells": m.cells,
+            "n_procs": m.n_procs, "start_time_s": m.start_time, "end_time_s": m.end_time,
+            "core_hours_per_simulated_s": finite(m.core_hours_per_simulated_s),
+            "core_hours_to_steady": m.core_hours_to_steady, "steady": m.steady,
+            "first_steady_s": m.first_steady, "verdict": m.verdict,
+            **{unit_name(n): finite(m.outputs.get(n, math.nan) * meta[n][2]) for n in meta},
+            "errors": {n: finite(m.errors.get(n, math.nan)) for n in meta},
+        })
+    path.write_text(json.dumps({
+        "scene": study.scene.name, "reference": study.reference_name,
+        "levels": levels,
+        "orders": {n: finite(study.orders.get(n, math.nan)) for n in meta},
+        "cheapest_level": cheapest_levels(study),
+    }, indent=2) + "\n")
 
 
 def write_csv(study: Study, path: Path) -> None:
@@ -345,7 +512,22 @@ def markdown(study: Study) -> str:
     lines += ["", f"Errors are relative to the {study.reference_name}: {reference}.",
               f"Observed order of convergence (slope of log error over log cell size): "
               f"{orders or 'not enough non-zero errors to fit'}."]
+    if any(m.steady is not None for m in study.members):
+        lines += ["", "Quasi-steady (`ldna steady`): " + "; ".join(
+            f"{m.name} {'yes' if m.steady else 'no (' + m.verdict + ')'}"
+            + (f", first at {m.first_steady:.3g} s ({m.core_hours_to_steady:.2f} core-h "
+               f"from {m.start_time:g} s)" if m.first_steady is not None else "")
+            + f", {m.core_hours_per_simulated_s:.2f} core-h per simulated s"
+            for m in study.members) + "."]
+    cheapest = cheapest_levels(study)
+    lines += ["", "Cheapest level within 5 % / 10 % of the reference: " + "; ".join(
+        f"{meta[n][0]} {_level_or_finer(c['5%'])} / {_level_or_finer(c['10%'])}"
+        for n, c in cheapest.items()) + "."]
     return "\n".join(lines) + "\n"
+
+
+def _level_or_finer(level: float | None) -> str:
+    return "finer than tested" if level is None else f"level {meshing.level_name(level)}"
 
 
 def plot(study: Study, path: Path) -> None:
@@ -372,7 +554,10 @@ def plot(study: Study, path: Path) -> None:
     axes.set_ylabel(f"relative error against the {study.reference_name}")
     axes.set_title(f"{study.scene.name} scene: accuracy against cost")
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=8)
+    if axes.get_legend_handles_labels()[0]:
+        axes.legend(fontsize=8)
+    else:
+        axes.text(0.5, 0.5, "no errors to plot yet", transform=axes.transAxes, ha="center")
     figure.tight_layout()
     figure.savefig(path, dpi=120)
     plt.close(figure)
@@ -381,7 +566,8 @@ def plot(study: Study, path: Path) -> None:
 def run_study(template: Path, out: Path, scene: Scene | None = None,
               levels: list[float] | None = None, max_co: list[float] | None = None,
               end_time: float | None = None, n_procs: int = 1,
-              start: StartState | None = None) -> tuple[Study, list[Path]]:
+              start: StartState | None = None,
+              resume: bool = False) -> tuple[Study, list[Path]]:
     """Run the members, evaluate them and write CSV, Markdown and PNG into ``out``.
 
     With ``start`` every member starts from that developed state, mapped onto
@@ -400,14 +586,16 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
             member = Member(level=level, max_co=co, cell_size_mm=math.nan)
             print(f"{scene.name}: running {member.name} ...", flush=True)
             run_member(template, out / "members" / member.name, scene, member, end_time, n_procs,
-                       start)
+                       start, resume)
             print(f"  {member.cells} cells, {member.steps} steps, {member.wall_time:.1f} s "
                   f"wall, {member.core_seconds_per_ms:.3g} core-s per simulated ms", flush=True)
             members.append(member)
     exact = scene.exact(Case(out / "members" / members[0].name), members[0].end_time)
     study = evaluate(scene, members, exact)
-    paths = [out / "accuracy.csv", out / "accuracy.md", out / "accuracy.png"]
+    paths = [out / "accuracy.csv", out / "accuracy.md", out / "accuracy.png",
+             out / "accuracy.json"]
     write_csv(study, paths[0])
     paths[1].write_text(markdown(study))
     plot(study, paths[2])
+    write_json(study, paths[3])
     return study, paths

@@ -74,9 +74,17 @@ def _accuracy(args: argparse.Namespace) -> int:
             print("ldna accuracy: --start-from needs --start-time", file=sys.stderr)
             return 2
         start = accuracy.StartState(Path(args.start_from), args.start_time)
+    end_time = args.end_time
+    if isinstance(scene, accuracy.BeadScene):
+        if end_time is None:
+            end_time = (start.time if start else 0.0) + scene.MAX_SPAN
+        print(f"ldna accuracy: each level runs until its bead is quasi-steady, at most to "
+              f"{end_time:g} s, writing every {scene.STRETCH:g} s; if it stops, run the same "
+              "command with --resume", flush=True)
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
-                                      end_time=args.end_time, n_procs=args.np, start=start)
+                                      end_time=end_time, n_procs=args.np, start=start,
+                                      resume=args.resume)
     print(accuracy.markdown(study))
     for path in paths:
         print(path)
@@ -281,8 +289,11 @@ def build_parser() -> argparse.ArgumentParser:
     )
     accuracy.add_argument("case", type=_case, help="case template: cases/ldna or cases/stefanMelting")
     accuracy.add_argument("output", help="folder of the study")
-    accuracy.add_argument("--scene", choices=("auto", "ldna", "stefan"), default="auto",
-                          help="kind of scene [from the case's caseParameters]")
+    accuracy.add_argument("--scene", choices=("auto", "ldna", "bead", "stefan"), default="auto",
+                          help="kind of scene [from the case's caseParameters]; bead: the LDNA "
+                               "template run at each level until ldna steady judges its bead "
+                               "quasi-steady (at most to --end-time), best --start-from a "
+                               "steady run")
     accuracy.add_argument("--levels", type=_float_list, metavar="L1,L2,...",
                           help="mesh levels; LDNA: 0..3, halves allowed (process-zone "
                                "cells of 0.45 mm/2^level) [0,0.5,1]; Stefan: 25*2^level cells "
@@ -296,6 +307,10 @@ def build_parser() -> argparse.ArgumentParser:
     accuracy.add_argument("--start-time", type=_finite_float, metavar="T",
                           help="the reconstructed time of --start-from to start at [s]")
     accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
+    accuracy.add_argument("--resume", action="store_true",
+                          help="continue the members that ran before from their latest "
+                               "written time (a study that outlasted a session: run the same "
+                               "command with --resume)")
     accuracy.set_defaults(func=_accuracy)
 
     post = commands.add_parser(

@@ -95,4 +95,8 @@ def test_study_resumes_from_the_latest_written_time(tmp_path: Path) -> None:
     assert abs(run_["end_time_s"] - RESUMED_END) < MAX_DELTA_T
     assert run_["steady"] is False, "20 ms of welding is no steady bead"
     assert run_["dropletTemperature"] == "2100"
+    # Every run records its process parameters, swept or not
+    template = read_scalars(TEMPLATE / "system" / "caseParameters")
+    assert run_["laser_power_W"] == template["laserPower"]
+    assert run_["oscillation_amplitude_mm"] == 1e3 * template["oscillationAmplitude"]
     assert (member / "pictures" / "transverse.png").is_file()

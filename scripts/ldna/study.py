@@ -98,6 +98,8 @@ class Member:
     #: whether ``ldna steady`` judges its bead quasi-steady
     post: dict = field(default_factory=dict)
     steady: bool | None = None
+    #: The last judged windows' means of the section's metrics [SI]
+    window_means: dict[str, float] = field(default_factory=dict)
 
 
 def latest_time(case: Path) -> float:
@@ -234,9 +236,30 @@ def collect_post(member: Member) -> None:
     result, _, time_read = post_process(member.path)
     member.post = summary(member.path, result, time_read)
     try:
-        member.steady = case_steadiness(member.path).steady
+        verdict = case_steadiness(member.path)
+        member.steady = verdict.steady
+        member.window_means = {name: m.mean for name, m in verdict.metrics.items()}
     except (ValueError, IndexError):
         member.steady = False
+
+
+#: The process parameters every run records (caseParameters entry -> key,
+#: factor from the entry's unit)
+PROCESS_PARAMETERS = {"laserPower": ("laser_power_W", 1.0),
+                      "oscillationAmplitude": ("oscillation_amplitude_mm", 1e3),
+                      "weldingSpeed": ("welding_speed_mm_per_s", 1e3),
+                      "wireFeedSpeed": ("wire_feed_speed_m_per_s", 1.0)}
+
+
+def process_parameters(case: Path) -> dict[str, float]:
+    """The member's process parameters as its caseParameters hold them."""
+    values = {}
+    for entry, (key, factor) in PROCESS_PARAMETERS.items():
+        try:
+            values[key] = factor * Case(case).scalar(CASE_PARAMETERS, entry)
+        except (KeyError, ValueError, FileNotFoundError):
+            continue
+    return values
 
 
 def write_json(members: list[Member], path: Path) -> Path:
@@ -245,9 +268,11 @@ def write_json(members: list[Member], path: Path) -> Path:
     for member in members:
         post = {key: (None if isinstance(value, float) and math.isnan(value) else value)
                 for key, value in member.post.items()}
-        runs.append({"member": member.name, **member.values, "status": member.status,
+        runs.append({"member": member.name, **member.values,
+                     **process_parameters(member.path), "status": member.status,
                      "error": member.error, "end_time_s": member.metrics.get("time"),
-                     "wall_time_s": member.wall_time, "steady": member.steady, **post})
+                     "wall_time_s": member.wall_time, "steady": member.steady,
+                     "window_means": member.window_means, **post})
     path.write_text(json.dumps({"runs": runs}, indent=2) + "\n", encoding="utf-8")
     return path
 

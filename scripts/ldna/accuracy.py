@@ -59,20 +59,30 @@ class Scene(Protocol):
         """Analytical outputs at ``end_time``, or None (compare with the finest run)."""
 
 
+#: The LDNA scenes' outputs: label, unit and factor from SI to that unit
+LDNA_OUTPUTS = {
+    "pool_width": ("melt-pool width", "mm", 1e3),
+    "pool_length": ("melt-pool length", "mm", 1e3),
+    "penetration": ("penetration", "mm", 1e3),
+    "bead_height": ("bead height", "mm", 1e3),
+    "bead_width": ("bead width", "mm", 1e3),
+    "bead_area": ("bead area", "mm2", 1e6),
+    "wetting_angle": ("wetting angle", "deg", 1.0),
+    "bonded_width": ("bonded width", "mm", 1e3),
+    "dilution": ("dilution", "-", 1.0),
+    "peak_temperature": ("peak metal temperature", "K", 1.0),
+    "droplet_fraction": ("largest metal fraction in flight", "-", 1.0),
+    "metal_mass": ("metal mass", "g", 1e3),
+}
+
+
 class LdnaScene:
     """The LDNA template scene: outputs of the meltPoolMetrics function object."""
 
     name = "ldna"
-    outputs_meta = {
-        "pool_width": ("melt-pool width", "mm", 1e3),
-        "pool_length": ("melt-pool length", "mm", 1e3),
-        "penetration": ("penetration", "mm", 1e3),
-        "bead_height": ("bead height", "mm", 1e3),
-        "bead_width": ("bead width", "mm", 1e3),
-        "peak_temperature": ("peak metal temperature", "K", 1.0),
-        "droplet_fraction": ("largest metal fraction in flight", "-", 1.0),
-        "metal_mass": ("metal mass", "g", 1e3),
-    }
+    outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
+        "pool_width", "pool_length", "penetration", "bead_height", "bead_width",
+        "peak_temperature", "droplet_fraction", "metal_mass")}
     #: Process-zone cells of 0.45, 0.32 and 0.225 mm (level 1 resolves droplets)
     default_levels = (0.0, 0.5, 1.0)
 
@@ -134,16 +144,9 @@ class BeadScene(LdnaScene):
     level then only relaxes to its own resolution's weld."""
 
     name = "bead"
-    outputs_meta = {
-        "bead_width": ("bead width", "mm", 1e3),
-        "bead_height": ("bead height", "mm", 1e3),
-        "bead_area": ("bead area", "mm2", 1e6),
-        "wetting_angle": ("wetting angle", "deg", 1.0),
-        "bonded_width": ("bonded width", "mm", 1e3),
-        "penetration": ("penetration", "mm", 1e3),
-        "dilution": ("dilution", "-", 1.0),
-        "pool_length": ("melt-pool length", "mm", 1e3),
-    }
+    outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
+        "bead_width", "bead_height", "bead_area", "wetting_angle", "bonded_width",
+        "penetration", "dilution", "pool_length")}
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: the

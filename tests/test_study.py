@@ -100,3 +100,25 @@ def test_study_resumes_from_the_latest_written_time(tmp_path: Path) -> None:
     assert run_["laser_power_W"] == template["laserPower"]
     assert run_["oscillation_amplitude_mm"] == 1e3 * template["oscillationAmplitude"]
     assert (member / "pictures" / "transverse.png").is_file()
+
+
+def test_study_members_start_from_a_run(tmp_path: Path) -> None:
+    """``--start-from RUN``: every member starts at RUN's latest time from its
+    fields (a steady neighbour in a real study), not from the flat substrate."""
+    ldna = Path(sys.executable).parent / "ldna"
+    source_study = tmp_path / "source"
+    run(tmp_path, f"{ldna} study {TEMPLATE} {source_study} --set dropletTemperature=2100 "
+                  f"--end-time {FIRST_LEG_END}", log_name="source")
+    source = source_study / "member000"
+    study_dir = tmp_path / "study"
+    run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} --set laserPower=1000 "
+                  f"--start-from {source} --end-time {RESUMED_END}", log_name="study")
+    member = study_dir / "member000"
+    log = (member / "log.ldnaFoam").read_text()
+    latest = max((p for p in source.iterdir() if p.name[0].isdigit() and p.name != "0"),
+                 key=lambda p: float(p.name))
+    assert abs(float(latest.name) - FIRST_LEG_END) < MAX_DELTA_T
+    assert f"Create mesh for time = {latest.name}" in log
+    results = json.loads((study_dir / "results.json").read_text())["runs"]
+    assert results[0]["status"] == "done" and results[0]["laser_power_W"] == 1000
+    assert abs(results[0]["end_time_s"] - RESUMED_END) < MAX_DELTA_T

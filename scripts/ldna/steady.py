@@ -76,7 +76,8 @@ RELATIVE_TOLERANCE = 0.01
 #: pass 95 % of the time)
 WINDOWS = 4
 NOISE_SIGMAS = 4.303
-#: A judged stretch shorter than this [s] whose bead area shows no ripple
+#: A judged stretch shorter than this [s] (for the shortest window
+#: MIN_WINDOW; in proportion for another) whose bead area shows no ripple
 #: period yet (three upward crossings of its trend) may ripple more slowly
 #: than the windows, which would then take the ripple for noise: too short
 UNRESOLVED_SPAN = 2 * WINDOWS * MIN_WINDOW
@@ -340,20 +341,23 @@ def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None =
     elif end - start < WINDOWS * window:
         verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival, "
                                   f"{WINDOWS} windows of {window:.3g} s needed")
-    elif (end - start < UNRESOLVED_SPAN
-          and ripple_period(times, table["bead_area"], start) is None):
-        verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's arrival "
-                                  f"show no ripple period yet ({UNRESOLVED_SPAN:.3g} s "
-                                  "without one are needed)")
     elif not metrics["bead_area"].mean > 0:
         verdict, reason = False, "no bead at the section"
     else:
         changing = [n for n, m in metrics.items() if not m.steady]
         if drift is not None and not drift.steady:
             changing.append("the domain's metal and heat")
-        verdict = not changing
-        reason = ("every metric's drift within its tolerance" if verdict
-                  else "still changing: " + ", ".join(changing))
+        unresolved_span = UNRESOLVED_SPAN * min_window / MIN_WINDOW
+        if changing:
+            verdict, reason = False, "still changing: " + ", ".join(changing)
+        elif (end - start < unresolved_span
+              and ripple_period(times, table["bead_area"], start) is None):
+            # What passed may be a ripple slower than the windows
+            verdict, reason = False, (f"too short: {end - start:.3g} s after the bead's "
+                                      f"arrival show no ripple period yet "
+                                      f"({unresolved_span:.3g} s without one are needed)")
+        else:
+            verdict, reason = True, "every metric's drift within its tolerance"
     return Steadiness(verdict, reason, end, window, metrics, drift)
 
 

@@ -241,10 +241,13 @@ def test_a_run_still_growing_is_not_steady(ldna_case: Case) -> None:
     area = verdict.metrics["bead_area"]
     assert area.mean > area.previous_mean > 0, "the deposit under the droplets grows"
     assert not verdict.steady and "bead_area" in verdict.reason
-    # Nothing leaves the domain in 40 ms: it gains what the wires feed
+    # Nothing leaves the domain in 40 ms: it fills with what the wires feed
+    # (a droplet every 10 ms per wire: over four 8 ms windows the slope of
+    # the domain's mass steps is not the feed's mean, but far above the
+    # tolerance), so the domain's balance is not steady either
     balance = verdict.balance
     assert balance is not None and not balance.steady
-    assert balance.mass_rate == pytest.approx(balance.mass_throughput, rel=0.05)
+    assert balance.mass_rate > 10 * BALANCE_TOLERANCE * balance.mass_throughput
     assert "the domain's metal and heat" in verdict.reason
     # The command line says the same
     output = subprocess.run([sys.executable, "-m", "ldna.cli", "steady", str(case), "--json"],

@@ -49,7 +49,6 @@ from pathlib import Path
 import numpy as np
 
 from . import post
-from .balance import wire_table
 from .case import Case
 from .material import Metal
 
@@ -65,6 +64,9 @@ MIN_WINDOW = 0.25
 #: template's flat run: within 1.5 % from 3.75 s on, 35 % at 2.6 s; the
 #: run from the first estimate (too hot) lost 2.6-8 % throughout its 2.7 s
 BALANCE_TOLERANCE = 0.02
+#: Column of each wire's metal added since the run's start in the droplet
+#: sources' tables (``<wire>_addedMass``)
+ADDED_MASS_SUFFIX = "_addedMass"
 #: Two consecutive window means agree within this share of the last one, or
 #: of the macro-section's own size in that direction (``SCALES``): a metric
 #: far smaller than the bead (a thin bond's penetration, a sporadic fusion
@@ -237,22 +239,33 @@ class DomainBalance:
         case = Case(case)
         try:
             balances = case.balances()
-            wires = wire_table(case)
+            # Each source's table read once (a running case appends rows)
+            tables = [case.table(source, "droplets")
+                      for source in case.tables_named("droplets")]
         except (FileNotFoundError, KeyError, ValueError):
             return None
-        if not wires:
+        if not tables:
             return None
+        rows = min(len(table) for table in tables)
         metal = Metal.from_case(case.path)
         ambient = metal.enthalpy(_case_scalar(case, "system/caseParameters",
                                               "ambientTemperature", 300.0))
-        wire_times = _first_wire_times(case)
-        added_mass = sum(table[:, 0] for table in wires.values())
-        added_enthalpy = sum(
-            table[:, 0] * (metal.enthalpy(_case_scalar(
-                case, "constant/fvOptions", f"wireDroplets/wires/{wire}/temperature",
-                _case_scalar(case, "system/caseParameters", "dropletTemperature",
-                             float("nan")))) - ambient)
-            for wire, table in wires.items())
+        default_temperature = _case_scalar(case, "system/caseParameters",
+                                           "dropletTemperature", float("nan"))
+        wire_times = np.asarray(tables[0]["Time"][:rows], dtype=float)
+        added_mass = np.zeros(rows)
+        added_enthalpy = np.zeros(rows)
+        for table in tables:
+            for column in table.dtype.names:
+                if not column.endswith(ADDED_MASS_SUFFIX):
+                    continue
+                wire = column[:-len(ADDED_MASS_SUFFIX)]
+                temperature = _case_scalar(case, "constant/fvOptions",
+                                           f"wireDroplets/wires/{wire}/temperature",
+                                           default_temperature)
+                added = np.asarray(table[column][:rows], dtype=float)
+                added_mass += added
+                added_enthalpy += added * (metal.enthalpy(temperature) - ambient)
         try:
             laser = case.table("laser", "power")
             laser_times = laser["Time"]
@@ -260,8 +273,7 @@ class DomainBalance:
         except (FileNotFoundError, ValueError):
             laser_times = laser_power = np.zeros(0)
         return cls(balances["time"], balances["metal_mass"], balances["enthalpy"],
-                   wire_times, _continued(np.asarray(added_mass)),
-                   _continued(np.asarray(added_enthalpy)),
+                   wire_times, _continued(added_mass), _continued(added_enthalpy),
                    np.asarray(laser_times), np.asarray(laser_power))
 
     def drift(self, start: float, end: float) -> BalanceDrift | None:
@@ -296,11 +308,6 @@ def _continued(totals: np.ndarray) -> np.ndarray:
     restarted = steps < 0
     steps[restarted] = totals[restarted]
     return np.cumsum(steps)
-
-
-def _first_wire_times(case: Case) -> np.ndarray:
-    source = case.tables_named("droplets")[0]
-    return np.asarray(case.table(source, "droplets")["Time"], dtype=float)
 
 
 def judge(times: np.ndarray, table: dict[str, np.ndarray], start: float | None = None,

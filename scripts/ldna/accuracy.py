@@ -30,7 +30,7 @@ import numpy as np
 
 from . import meshing
 from .case import Case
-from .foamcase import BALANCES
+from .foamcase import BALANCES, PROJECT_DIR
 from .foamdict import read_scalars
 from .stefan import NeumannSolution, front_position
 
@@ -58,6 +58,9 @@ class Scene(Protocol):
     def exact(self, case: Case, end_time: float) -> dict[str, float] | None:
         """Analytical outputs at ``end_time``, or None (compare with the finest run)."""
 
+
+#: The cases' shell steps (startFromState: a run's state mapped onto a case)
+RUN_FUNCTIONS = PROJECT_DIR / "bin" / "tools" / "RunFunctions"
 
 #: The LDNA scenes' outputs: label, unit and factor from SI to that unit
 LDNA_OUTPUTS = {
@@ -313,11 +316,9 @@ class StartState:
         follow), with the state's fields; quantities the mapping cannot carry
         (the time step) start from the member's controlDict.
         """
-        case.set("system/controlDict", "startFrom", "startTime")
-        case.set("system/controlDict", "startTime", f"{self.time:g}")
-        shutil.copytree(case / "0", case / f"{self.time:g}")
-        case.run(f"mapFields {self.case.resolve()} -consistent -sourceTime {self.time:g}",
-                 log_name="mapFields")
+        # The cases' own step (bin/tools/RunFunctions, as Allrun -start-from)
+        case.run(f". '{RUN_FUNCTIONS}' && startFromState '{self.case.resolve()}' "
+                 f"{self.time:g}", log_name="startFromState")
 
 
 def run_member(template: Path, directory: Path, scene: Scene, member: Member,

@@ -89,10 +89,17 @@ class Case:
         """Cells of the case's mesh."""
         return meshing.cell_count(self.path)
 
+    def set_ranks(self, n_procs: int) -> None:
+        """Decompose into ``n_procs`` subdomains: their number and the
+        hierarchical split (``n_procs`` along the weld), which decomposePar
+        requires to agree."""
+        self.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
+        self.set("system/decomposeParDict", "coeffs/n", f"({n_procs} 1 1)")
+
     def decompose(self, n_procs: int | None = None) -> None:
         """decomposePar (into ``n_procs`` subdomains, if given)."""
         if n_procs is not None:
-            self.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
+            self.set_ranks(n_procs)
         self.run("decomposePar -force", log_name="decomposePar")
 
     def run(self, command: str = "ldnaFoam", n_procs: int = 1, log_name: str | None = None,

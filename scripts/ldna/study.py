@@ -142,8 +142,7 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
         if end_time is not None:
             case.set("system/controlDict", "endTime", f"{end_time:g}")
         if n_procs > 1:
-            case.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
-            case.set("system/decomposeParDict", "coeffs/n", f"({n_procs} 1 1)")
+            case.set_ranks(n_procs)
         members.append(Member(name, values, path))
     return members
 

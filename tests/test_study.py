@@ -6,7 +6,8 @@ parameter values and bead metrics, each member's case must carry its
 values, and the hotter droplets must show in the peak metal temperature
 (the droplets, not the laser, set it in the first milliseconds).  A third
 member with a droplet temperature of -5 K fails: the study goes on, marks
-it failed with its error line and exits non-zero.
+it failed with its error line and exits non-zero.  The members run two at
+a time (``--jobs 2``).
 """
 from __future__ import annotations
 
@@ -15,9 +16,12 @@ import json
 import sys
 from pathlib import Path
 
+import pytest
+
 from conftest import TEMPLATE
 from ldna.foamcase import run
 from ldna.foamdict import read_scalars
+from ldna.study import Parameter, make_members
 
 #: Simulated time of each member [s]: the first droplets detach at 9.7 ms, so
 #: the run has some 100 steps and the function object writes its rows (every
@@ -34,7 +38,8 @@ def test_study_of_a_three_by_one_grid(tmp_path: Path) -> None:
     temperatures = ",".join(DROPLET_TEMPERATURES + (BAD_DROPLET_TEMPERATURE,))
     result = run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} "
                            f"--set dropletTemperature={temperatures} "
-                           f"--set weldingSpeed={WELDING_SPEED} --end-time {END_TIME}",
+                           f"--set weldingSpeed={WELDING_SPEED} --end-time {END_TIME} "
+                           f"--jobs 2",
                  log_name="study", check=False)
     print(result.output[-500:])
     assert result.returncode != 0, "a failed member fails the study"
@@ -122,3 +127,21 @@ def test_study_members_start_from_a_run(tmp_path: Path) -> None:
     results = json.loads((study_dir / "results.json").read_text())["runs"]
     assert results[0]["status"] == "done" and results[0]["laser_power_W"] == 1000
     assert abs(results[0]["end_time_s"] - RESUMED_END) < MAX_DELTA_T
+
+
+def test_paired_axes_make_one_member_per_position(tmp_path: Path) -> None:
+    """``--paired``: member i takes the i-th value of every axis (a laser off,
+    and a narrower sweep at another power), not their 2 x 2 grid."""
+    powers = Parameter.parse("laserPower=0,1500")
+    amplitudes = Parameter.parse("oscillationAmplitude=6.6e-3,3.3e-3")
+    members = make_members(TEMPLATE, tmp_path / "study", [powers, amplitudes], paired=True)
+    assert [m.values for m in members] == [
+        {"laserPower": "0", "oscillationAmplitude": "6.6e-3"},
+        {"laserPower": "1500", "oscillationAmplitude": "3.3e-3"}]
+    for member in members:
+        parameters = read_scalars(member.path / "system" / "caseParameters")
+        assert parameters["laserPower"] == float(member.values["laserPower"])
+        assert parameters["oscillationAmplitude"] == float(member.values["oscillationAmplitude"])
+    with pytest.raises(ValueError, match="laserPower has 2"):
+        make_members(TEMPLATE, tmp_path / "other", [powers, Parameter.parse("level=0")],
+                     paired=True)

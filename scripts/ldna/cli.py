@@ -53,7 +53,8 @@ def _study(args: argparse.Namespace) -> int:
                                                                  args.start_time)
     members, table = study.run_study(Path(args.template), Path(args.study_dir), parameters,
                                      end_time=args.end_time, n_procs=args.np,
-                                     resume=args.resume, start=start)
+                                     resume=args.resume, start=start, paired=args.paired,
+                                     jobs=args.jobs)
     failed = [m.name for m in members if m.status != "done"]
     print(f"{len(members)} members, {len(failed)} failed; results: {table} "
           f"and {table.with_suffix('.json')}")
@@ -267,6 +268,11 @@ def build_parser() -> argparse.ArgumentParser:
                             "(e.g. constant/fvOptions:laser/absorptionModel); repeat for more")
     study.add_argument("--end-time", type=_positive_float, help="simulated time of every member [s]")
     study.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per member (1: serial)")
+    study.add_argument("--jobs", type=_positive_int, default=1,
+                       help="members run at a time (each on --np ranks)")
+    study.add_argument("--paired", action="store_true",
+                       help="pair the --set axes' values (member i takes the i-th value of "
+                            "each; equally long lists) instead of spanning their grid")
     study.add_argument("--resume", action="store_true",
                        help="keep the members that exist and continue each from its latest "
                             "written time (--end-time may be raised); finished ones are only "

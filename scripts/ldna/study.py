@@ -14,6 +14,11 @@ each member then relaxes from a neighbouring weld instead of building its
 bead and heating its substrate from nothing, which takes seconds of welding
 (docs/validation/steady-start.md).
 
+``--paired`` pairs the axes' values (the i-th member takes the i-th value
+of each) instead of spanning their grid, and ``--jobs N`` runs N members at
+a time (on a 2-core machine two serial members use both cores without the
+ranks' exchanges).
+
 Runs longer than a session resume: ``ldna study ... --resume`` with the same
 ``--set`` values keeps the members that exist, continues each from its
 latest written time (``Allrun -resume``; ``--end-time`` may be raised) and
@@ -113,8 +118,9 @@ def latest_time(case: Path) -> float:
 
 def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
                  end_time: float | None = None, n_procs: int = 1,
-                 resume: bool = False) -> list[Member]:
-    """Copy the template once per grid point and set each member's values
+                 resume: bool = False, paired: bool = False) -> list[Member]:
+    """Copy the template once per grid point (``paired``: once per position
+    of the axes' equally long value lists) and set each member's values
     (with ``resume``, keep a member that exists and only set its end time)."""
     template, study_dir = Path(template), Path(study_dir)
     if not (template / CASE_PARAMETERS).exists() and any(
@@ -122,7 +128,14 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
         raise FileNotFoundError(f"{template} has no {CASE_PARAMETERS}")
     study_dir.mkdir(parents=True, exist_ok=True)
     members = []
-    grid = list(itertools.product(*(p.values for p in parameters)))
+    if paired:
+        lengths = {len(p.values) for p in parameters}
+        if len(lengths) > 1:
+            raise ValueError("paired axes need as many values each: "
+                             + ", ".join(f"{p.name} has {len(p.values)}" for p in parameters))
+        grid = list(zip(*(p.values for p in parameters)))
+    else:
+        grid = list(itertools.product(*(p.values for p in parameters)))
     for index, combination in enumerate(grid):
         name = f"member{index:03d}"
         path = study_dir / name
@@ -191,27 +204,41 @@ class StartFrom:
                 + ("" if self.time is None else f" -start-time {self.time:g}"))
 
 
-def run_member(member: Member, parallel: bool, index: int, total: int, started: float,
-               start: StartFrom | None = None) -> None:
-    """Run one member's Allrun (or continue it) and read its metrics."""
+@dataclass
+class _Running:
+    """A member whose Allrun runs."""
+
+    member: Member
+    process: subprocess.Popen
+    log: object
+    begin: float
+    end_time: float
+
+
+def _label(member: Member) -> str:
+    return f"{member.name} " + " ".join(f"{k}={v}" for k, v in member.values.items())
+
+
+def launch_member(member: Member, parallel: bool,
+                  start: StartFrom | None = None) -> _Running | None:
+    """Start one member's Allrun (or its continuation); None if it has
+    already reached its end time."""
     end_time = Case(member.path).scalar("system/controlDict", "endTime")
-    label = f"{member.name} " + " ".join(f"{k}={v}" for k, v in member.values.items())
-    returncode = 0
-    begin = time.time()
-    if not (member.resumed and finished(member.path, end_time)):
-        command = (f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
-                   + (" -resume" if member.resumed else
-                      start.allrun_options() if start else ""))
-        with open(member.path / "log.Allrun", "a" if member.resumed else "w",
-                  encoding="utf-8") as log:
-            process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
-                                       stdout=log, stderr=subprocess.STDOUT)
-            while process.poll() is None:
-                fraction = min(1.0, _simulated_time(member.path) / end_time)
-                _progress(index + fraction, total, label, started)
-                time.sleep(POLL_SECONDS)
-            returncode = process.returncode
-    member.wall_time = time.time() - begin
+    if member.resumed and finished(member.path, end_time):
+        return None
+    command = (f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
+               + (" -resume" if member.resumed else
+                  start.allrun_options() if start else ""))
+    log = open(member.path / "log.Allrun", "a" if member.resumed else "w", encoding="utf-8")
+    process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
+                               stdout=log, stderr=subprocess.STDOUT)
+    return _Running(member, process, log, time.time(), end_time)
+
+
+def finish_member(member: Member, returncode: int, wall_time: float) -> None:
+    """Judge a member whose Allrun ended and read its metrics."""
+    end_time = Case(member.path).scalar("system/controlDict", "endTime")
+    member.wall_time = wall_time
     solver_log = member.path / "log.ldnaFoam"
     log_text = solver_log.read_text(errors="replace") if solver_log.exists() else ""
     member.status = ("done" if returncode == 0 and finished(member.path, end_time)
@@ -224,7 +251,36 @@ def run_member(member: Member, parallel: bool, index: int, total: int, started: 
         member.metrics = {"time": float(row[0]),
                           **dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, map(float, row[1:])))}
         collect_post(member)
-    _progress(index + 1, total, label, started)
+
+
+def run_members(members: list[Member], parallel: bool, jobs: int = 1,
+                start: StartFrom | None = None) -> None:
+    """Run the members, ``jobs`` at a time, with one progress bar."""
+    pending = list(members)
+    running: list[_Running] = []
+    done = 0
+    started = time.time()
+    while pending or running:
+        while pending and len(running) < jobs:
+            member = pending.pop(0)
+            launched = launch_member(member, parallel, start)
+            if launched is None:
+                finish_member(member, 0, 0.0)
+                done += 1
+            else:
+                running.append(launched)
+        for run in list(running):
+            if run.process.poll() is None:
+                continue
+            run.log.close()
+            finish_member(run.member, run.process.returncode, time.time() - run.begin)
+            running.remove(run)
+            done += 1
+        fractions = sum(min(1.0, _simulated_time(r.member.path) / r.end_time) for r in running)
+        _progress(done + fractions, len(members),
+                  " | ".join(_label(r.member) for r in running), started)
+        if running:
+            time.sleep(POLL_SECONDS)
 
 
 def collect_post(member: Member) -> None:
@@ -304,15 +360,16 @@ def write_csv(members: list[Member], path: Path) -> Path:
 
 def run_study(template: Path, study_dir: Path, parameters: list[Parameter],
               end_time: float | None = None, n_procs: int = 1,
-              resume: bool = False,
-              start: StartFrom | None = None) -> tuple[list[Member], Path]:
+              resume: bool = False, start: StartFrom | None = None,
+              paired: bool = False, jobs: int = 1) -> tuple[list[Member], Path]:
     """Make (or keep, with ``resume``), run and collect a study; returns the
     members and the CSV path (results.json beside it).  ``start``: the state
-    every new member starts from."""
-    members = make_members(template, study_dir, parameters, end_time, n_procs, resume)
-    started = time.time()
-    for index, member in enumerate(members):
-        run_member(member, n_procs > 1, index, len(members), started, start)
+    every new member starts from; ``paired``: the axes' values go together
+    (one member per position) instead of spanning a grid; ``jobs``: members
+    run at a time."""
+    members = make_members(template, study_dir, parameters, end_time, n_procs, resume,
+                           paired)
+    run_members(members, n_procs > 1, jobs, start)
     sys.stderr.write("\n")
     write_json(members, Path(study_dir) / "results.json")
     return members, write_csv(members, Path(study_dir) / "results.csv")

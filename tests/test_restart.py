@@ -9,6 +9,7 @@ END_TIME to within the linear solvers' tolerance.
 """
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +28,9 @@ END_TIME = "0.03"
 #: the same sequence of operations must reproduce that to round-off
 FIELD_TOLERANCE = 1e-9
 FIELDS = ("alpha.metal", "T", "U", "p_rgh")
+#: The continued runs' end [s]: a few steps past the saved state
+CONTINUED_END = "0.016"
+LDNA = Path(sys.executable).parent / "ldna"
 
 
 def prepare(case: Case) -> None:
@@ -114,3 +118,44 @@ def test_start_from_a_run_without_a_time_is_refused(ldna_case: Case, tmp_path: P
     assert result.returncode != 0
     assert str(empty) in log and "no reconstructed time" in log
     assert not (ldna_case / "log.blockMesh").exists(), "it meshed before refusing"
+
+
+def test_a_saved_state_continues_its_weld(ldna_case: Case, tmp_path: Path) -> None:
+    """``ldna save-state`` keeps a run's state compressed; ``Allrun
+    -start-from STATE`` starts from it exactly, and a case with the same
+    dictionaries (the same weld) also gets the state's tables before the
+    start, which ``ldna steady`` then reads; a case with other knobs does not."""
+    source = ldna_case
+    prepare(source)
+    source.set("system/controlDict", "endTime", STOP_TIME)
+    source.run("ldnaFoam")
+    state = tmp_path / "state"
+    source.run(f"{LDNA} save-state {source.path} {state}", log_name="saveState")
+    assert (state / STOP_TIME / "T.gz").is_file()
+    assert (state / "constant" / "polyMesh" / "faces.gz").is_file()
+
+    same = Case.copy_of(source, tmp_path / "same")
+    other = Case.copy_of(source, tmp_path / "other")
+    other.set("system/caseParameters", "laserPower", "1000")
+    for member in (same, other):
+        member.set("system/controlDict", "endTime", CONTINUED_END)
+        member.run(f"./Allrun -start-from {state}", log_name="Allrun")
+        assert f"Create mesh for time = {STOP_TIME}" in (member / "log.ldnaFoam").read_text()
+        # The gzipped fields are the source's, digit for digit
+        np.testing.assert_array_equal(member.field("T", STOP_TIME), source.field("T", STOP_TIME))
+
+    balances = same.balances()
+    source_balances = source.balances()
+    kept = source_balances[source_balances["time"] < float(STOP_TIME)]
+    print(f"continued weld: {len(balances)} balance rows from t = {balances['time'][0]} s, "
+          f"of which {int((balances['time'] < float(STOP_TIME)).sum())} the state's "
+          f"(the source wrote {len(kept)} before the start)")
+    before = balances[balances["time"] < float(STOP_TIME)]
+    assert 0 < len(before) <= len(kept)
+    # The history rows are the source's own rows (thinned), not recomputed
+    for row in before:
+        match = kept[np.isclose(kept["time"], row["time"], rtol=0, atol=1e-12)]
+        assert len(match) == 1
+        assert float(row["metal_mass"]) == pytest.approx(float(match["metal_mass"][0]), rel=1e-8)
+    assert float(other.balances()["time"][0]) == float(STOP_TIME), \
+        "a case with other knobs got the state's history"

@@ -206,6 +206,15 @@ def _post(args: argparse.Namespace) -> int:
     return 0
 
 
+def _save_state(args: argparse.Namespace) -> int:
+    from . import state
+
+    target = state.save_state(Path(args.run), Path(args.target), args.time, args.history)
+    print(f"{target}: the state of {args.run} at t = {state.state_time(target)} s; start a run "
+          f"from it with ./Allrun -start-from {target}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``ldna`` argument parser with one sub-command per task."""
     parser = argparse.ArgumentParser(prog="ldna", description=__doc__)
@@ -372,6 +381,18 @@ def build_parser() -> argparse.ArgumentParser:
     start.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
     start.add_argument("--json", action="store_true", help="print the estimate's figures as JSON")
     start.set_defaults(func=_steady_start)
+
+    save = commands.add_parser(
+        "save-state",
+        help="keep a run's state (mesh, fields, the tables ldna steady judges) compressed, "
+             "to start other runs from (./Allrun -start-from TARGET)",
+    )
+    save.add_argument("run", type=_case, help="the run (reconstructed)")
+    save.add_argument("target", help="folder to write; must not exist")
+    save.add_argument("--time", help="the reconstructed time to keep [the latest]")
+    save.add_argument("--history", type=_positive_float, default=2.0,
+                      help="seconds of tables before the time to keep [2]")
+    save.set_defaults(func=_save_state)
 
     post.add_argument("--json", action="store_true",
                       help="print the bead figures as one JSON object (mm, mm2, K, deg) "

@@ -375,11 +375,12 @@ JUDGING_INTERVAL = 0.05
 def first_steady(times: np.ndarray, table: dict[str, np.ndarray], start: float | None = None,
                  min_window: float = MIN_WINDOW,
                  balance: DomainBalance | None = None) -> float | None:
-    """The first end time, every JUDGING_INTERVAL, at which the run up to it is
-    judged quasi-steady (the time a run needed); None if never."""
+    """The first end time, every JUDGING_INTERVAL and at the last time, at
+    which the run up to it is judged quasi-steady (the time a run needed);
+    None if never."""
     first = float(times[0]) if start is None else max(float(start), float(times[0]))
-    for end in np.arange(first + WINDOWS * min_window, float(times[-1]) + 1e-12,
-                         JUDGING_INTERVAL):
+    ends = np.arange(first + WINDOWS * min_window, float(times[-1]) + 1e-12, JUDGING_INTERVAL)
+    for end in [*ends, float(times[-1])]:
         upto = times <= end
         if upto.sum() > 2 and judge(times[upto], {n: v[upto] for n, v in table.items()},
                                     start, min_window, balance).steady:

@@ -1,0 +1,107 @@
+"""A run's state kept to start other runs from (``ldna save-state``).
+
+A saved state is a small OpenFOAM case: the run's mesh and the fields a
+start needs at one time (``<time>/``), compressed (OpenFOAM reads ``.gz``
+files as they are), its dictionaries (``system/``, ``constant/``: the knobs
+and models it was computed with), and the tables that ``ldna steady``
+judges (bead metrics, domain balances, the wires' droplets, the laser's
+power) over the last seconds before that time.  ``./Allrun -start-from
+STATE`` maps it onto a case's mesh; a case whose dictionaries are the
+state's (but for its times and ranks) continues the weld, and the Allrun
+puts the state's tables into its postProcessing, so that its steadiness is
+judged over the seconds before the start as well as after.
+
+``cases/steadyWeld`` is the template's quasi-steady weld at level 0, saved
+this way; bin/ldna-scene starts from it.
+"""
+from __future__ import annotations
+
+import gzip
+import shutil
+from pathlib import Path
+
+from .case import Case
+from .foamcase import read_table
+
+#: Fields a start maps (the solver computes the rest from them)
+STATE_FIELDS = ("alpha.metal", "T", "U", "p", "p_rgh", "fillerFraction")
+#: Mesh files mapFields reads
+MESH_FILES = ("boundary", "faces", "neighbour", "owner", "points")
+#: Tables ``ldna steady`` judges: postProcessing folder, file name
+HISTORY_TABLES = (("meltPoolMetrics", "meltPoolMetrics"), ("balances", "balances"),
+                  ("wireDroplets", "droplets"), ("laser", "power"))
+#: Rows of a history table kept at most this often [s]: the per-step
+#: tables' 5 400 rows a second would be most of the state's size, and the
+#: judge's window means and slopes do not need them
+HISTORY_ROW_INTERVAL = 1e-3
+#: Subfolder of a saved state holding its tables
+HISTORY = "history"
+
+
+def _gzip(source: Path, target: Path) -> None:
+    target.parent.mkdir(parents=True, exist_ok=True)
+    with open(source, "rb") as raw, gzip.open(target.with_name(target.name + ".gz"), "wb") as out:
+        shutil.copyfileobj(raw, out)
+
+
+def _table_text(case: Path, name: str, file: str, start: float, end: float) -> str:
+    """The table's comment lines and its rows in [start, end], at most one
+    each HISTORY_ROW_INTERVAL (the first row of each interval)."""
+    directories = sorted((case / "postProcessing" / name).glob("*"))
+    header = next(iter(directories[0].glob(f"{file}.dat"))).read_text().splitlines()
+    comments = [line for line in header if line.startswith("#")]
+    rows = read_table(case, name, file)
+    kept, last = [], -float("inf")
+    for row in rows:
+        t = float(row[0])
+        if start <= t <= end and t >= last + HISTORY_ROW_INTERVAL - 1e-12:
+            kept.append("\t".join(f"{float(v):.9g}" for v in row))
+            last = t
+    return "\n".join(comments + kept) + "\n"
+
+
+def save_state(run: Path, target: Path, time: str | None = None,
+               history_seconds: float = 2.0) -> Path:
+    """Save ``run``'s reconstructed state at ``time`` (default its latest)
+    and its tables of the ``history_seconds`` before it into ``target``."""
+    run, target = Path(run), Path(target)
+    case = Case(run)
+    directory = case.times[-1] if time is None else run / time
+    if not directory.is_dir() or directory.name == "0":
+        raise FileNotFoundError(f"{run} has no reconstructed time {time or '(latest)'}")
+    if target.exists():
+        raise FileExistsError(f"{target} exists: remove it or choose another folder")
+    for file in MESH_FILES:
+        _gzip(run / "constant" / "polyMesh" / file, target / "constant" / "polyMesh" / file)
+    for field in STATE_FIELDS:
+        if (directory / field).is_file():
+            _gzip(directory / field, target / directory.name / field)
+    # The dictionaries: a run whose own are the same continues this weld
+    for folder in ("system", "constant"):
+        (target / folder).mkdir(parents=True, exist_ok=True)
+        for file in (run / folder).iterdir():
+            if file.is_file():
+                shutil.copy(file, target / folder / file.name)
+    end = float(directory.name)
+    for name, file in HISTORY_TABLES:
+        try:
+            text = _table_text(run, name, file, end - history_seconds, end)
+        except (FileNotFoundError, StopIteration, IndexError, ValueError):
+            continue
+        rows = [line for line in text.splitlines() if not line.startswith("#")]
+        if not rows:
+            continue
+        first = rows[0].split("\t")[0]
+        path = target / HISTORY / name / first / f"{file}.dat"
+        path.parent.mkdir(parents=True)
+        with gzip.open(path.with_name(path.name + ".gz"), "wt", encoding="utf-8") as out:
+            out.write(text)
+    return target
+
+
+def state_time(state: Path) -> str:
+    """The time of a saved state (its one time folder)."""
+    times = Case(state).times
+    if not times:
+        raise FileNotFoundError(f"{state} holds no state")
+    return times[-1].name

@@ -129,6 +129,22 @@ def test_study_members_start_from_a_run(tmp_path: Path) -> None:
     assert abs(results[0]["end_time_s"] - RESUMED_END) < MAX_DELTA_T
 
 
+def test_a_failed_parallel_member_reports_its_foam_error(tmp_path: Path) -> None:
+    """On 2 ranks the solver's FatalIOError comes with a rank prefix and is
+    followed by MPI's abort notice: results.csv must hold the error."""
+    study_dir = tmp_path / "study"
+    ldna = Path(sys.executable).parent / "ldna"
+    result = run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} "
+                           f"--set dropletTemperature={BAD_DROPLET_TEMPERATURE} "
+                           f"--end-time {END_TIME} --np 2", log_name="study", check=False)
+    assert result.returncode != 0
+    with open(study_dir / "results.csv", encoding="utf-8") as stream:
+        (row,) = list(csv.DictReader(stream))
+    print(f"failed parallel member: {row['error']}")
+    assert row["status"] == "failed"
+    assert "'temperature'" in row["error"] and BAD_DROPLET_TEMPERATURE in row["error"]
+
+
 def test_paired_axes_make_one_member_per_position(tmp_path: Path) -> None:
     """``--paired``: member i takes the i-th value of every axis (a laser off,
     and a narrower sweep at another power), not their 2 x 2 grid."""

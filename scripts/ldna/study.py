@@ -37,15 +37,15 @@ from __future__ import annotations
 
 import csv
 import itertools
+import json
+import math
+import re
 import shutil
 import subprocess
 import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-
-import json
-import math
 
 from .case import Case
 from .foamcase import BALANCES, ENV_SCRIPT, time_directories
@@ -332,10 +332,16 @@ def write_json(members: list[Member], path: Path) -> Path:
     return path
 
 
+#: The rank prefix of a parallel run's error lines ("[1] --> FOAM FATAL ...")
+RANK_PREFIX = re.compile(r"^\[\d+\]\s?")
+
+
 def failure_line(log_text: str) -> str:
     """The line that says why a run stopped: the first of its FOAM FATAL error's
-    message, else its last non-empty line."""
-    lines = [line.strip() for line in log_text.splitlines() if line.strip()]
+    message (on any rank of a parallel run, not MPI's abort notice after
+    it), else its last non-empty line."""
+    lines = [RANK_PREFIX.sub("", line).strip() for line in log_text.splitlines()]
+    lines = [line for line in lines if line]
     for i, line in enumerate(lines):
         if line.startswith("--> FOAM FATAL") and i + 1 < len(lines):
             return lines[i + 1]

@@ -189,6 +189,17 @@ def cpu_seconds(case: Path) -> float:
     return float(sum(_parse_table(path)["cpuTime"][-1] for path in files))
 
 
+def simulated_seconds(case: Path) -> float:
+    """Process time the case's runs simulated [s]: from each run's start
+    (its timeInfo folder) to its last step; the tables a continued weld
+    brought from its saved state were not simulated here."""
+    files = table_files(case, *TIME_INFO)
+    if not files:
+        raise FileNotFoundError(f"no postProcessing/timeInfo in {case}")
+    return float(sum(_parse_table(path)["Time"][-1] - float(path.parent.name)
+                     for path in files))
+
+
 def find_tables(case: Path, file: str) -> list[str]:
     """Names of the postProcessing directories holding a ``<file>.dat`` table."""
     return sorted({path.parents[1].name

@@ -38,6 +38,7 @@ from . import post, steady
 from .balance import evaporation_table, patch_flows
 from .material import Metal
 from .case import Case
+from .foamcase import simulated_seconds
 from .meshing import cell_count
 
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
@@ -172,8 +173,10 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         "cells": cell_count(case),
         "n_procs": ranks(case),
         "core_hours": hours,
-        # A run started from another's state simulates from its first row on
-        "core_hours_per_simulated_s": hours / (float(times[-1]) - float(times[0])),
+        # Over what the case's runs simulated (not a saved state's tables)
+        "core_hours_per_simulated_s": hours / (
+            simulated_seconds(case) if master_cpu_seconds is None
+            else float(times[-1]) - float(times[0])),
         "averaging_window_s": verdict.window,
         "mean_bead_area_mm2": 1e6 * area.mean,
         "previous_mean_bead_area_mm2": 1e6 * area.previous_mean,

@@ -263,6 +263,13 @@ class DomainBalance:
                 temperature = _case_scalar(case, "constant/fvOptions",
                                            f"wireDroplets/wires/{wire}/temperature",
                                            default_temperature)
+                if not math.isfinite(temperature):
+                    # Without it the heat brought in is unknown: never judge
+                    # the heat balance on a NaN
+                    raise ValueError(f"{case.path}: no droplet temperature of {wire} "
+                                     "(wireDroplets/wires/<wire>/temperature in "
+                                     "constant/fvOptions, or dropletTemperature in "
+                                     "system/caseParameters)")
                 added = np.asarray(table[column][:rows], dtype=float)
                 added_mass += added
                 added_enthalpy += added * (metal.enthalpy(temperature) - ambient)

@@ -64,6 +64,8 @@ def test_study_of_a_three_by_one_grid(tmp_path: Path) -> None:
     peak = [float(row["peak_temperature"]) for row in rows]
     print(f"peak metal temperature with droplets at {DROPLET_TEMPERATURES} K: {peak} K")
     assert peak[1] > peak[0], "hotter droplets make hotter metal"
+    # The finished members' sections side by side, on one temperature scale
+    assert (study_dir / "sections.png").stat().st_size > 0
 
 
 #: The resumed study: the first leg's end and the raised end time [s]

@@ -508,12 +508,15 @@ def _polyline(yz: np.ndarray, x: float):
 
 def post_process(case: Case | Path, output: Path | None = None, time: float | None = None,
                  surface_height: float = 0.0, bead_section: float | None = None,
-                 fusion_temperature_: float | None = None
+                 fusion_temperature_: float | None = None,
+                 temperature_range: tuple[float, float] | None = None
                  ) -> tuple[BeadMetrics, list[Path], float]:
     """Metrics, pictures and the time read of ``case`` at ``time`` (default: latest).
 
     PNGs and metrics.csv go to ``output``; the bead is measured at
     ``bead_section``, by default where the case's meltPoolMetrics measures it.
+    The pictures' temperature scale is ``temperature_range`` (several cases
+    drawn alike), by default the case's own range.
     """
     case = Path(case)
     output = Path(output or case / "pictures")
@@ -529,7 +532,8 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
     result.wetting_angle = bead_wetting_angle(grid, result.bead_section, surface_height)
 
     temperature = np.asarray(grid.cell_data["T"])
-    temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))
+    if temperature_range is None:
+        temperature_range = (float(temperature.min()), float(max(temperature.max(), t_fusion)))
     x_section = result.fused_section if result.penetration > 0 else result.bead_section
     centre = grid.center
     time_label = f"t = {grid.field_data['time'][0]:.4g} s"

@@ -6,7 +6,8 @@ template's ``Allrun`` (serially or on MPI ranks), shows a progress bar, and
 collects parameters, run time and the bead metrics of each member's last
 ``meltPoolMetrics`` row into one CSV.  ``results.json`` holds per member
 what ``ldna post --json`` reports at its last time (with its pictures in the
-member's ``pictures/``) and ``ldna steady``'s verdict.
+member's ``pictures/``) and ``ldna steady``'s verdict; ``sections.png`` the
+members' transverse sections side by side on one temperature scale.
 
 A study can start every member from the state of a steady run of the scene
 (``--start-from RUN [--start-time T]``, the template's ``Allrun -start-from``):
@@ -46,6 +47,8 @@ import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+
+import numpy as np
 
 from .case import Case
 from .foamcase import BALANCES, ENV_SCRIPT, time_directories
@@ -317,6 +320,50 @@ def process_parameters(case: Path) -> dict[str, float]:
     return values
 
 
+def _cropped(image: np.ndarray) -> np.ndarray:
+    """The picture without its white margins."""
+    ink = (image[..., :3] < 0.98).any(axis=2)
+    rows, columns = np.flatnonzero(ink.any(axis=1)), np.flatnonzero(ink.any(axis=0))
+    if not rows.size:
+        return image
+    return image[rows[0]:rows[-1] + 1, columns[0]:columns[-1] + 1]
+
+
+def write_sections(members: list[Member], path: Path) -> Path | None:
+    """The finished members' transverse sections side by side (fusion line,
+    bead, temperature), drawn again on one temperature scale: from the
+    lowest ambient to the hottest member's peak metal temperature."""
+    done = [m for m in members if m.status == "done" and m.post]
+    if not done:
+        return None
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    low = min(Case(m.path).scalar(CASE_PARAMETERS, "ambientTemperature") for m in done)
+    high = max(m.post["peak_metal_temperature_K"] for m in done)
+    columns = min(3, len(done))
+    rows = math.ceil(len(done) / columns)
+    figure, axes = plt.subplots(rows, columns, figsize=(6 * columns, 4 * rows), squeeze=False)
+    for axis in axes.flat:
+        axis.axis("off")
+    for axis, member in zip(axes.flat, done):
+        _, pictures, _ = post_process(member.path, member.path / "pictures" / "common-scale",
+                                      temperature_range=(low, high))
+        transverse = next(p for p in pictures if p.name == "transverse.png")
+        axis.imshow(_cropped(plt.imread(transverse)))
+        axis.set_title(" ".join(f"{k}={v}" for k, v in member.values.items())
+                       + f"\nbead {member.post['bead_width_mm']:.1f} x "
+                       f"{member.post['bead_height_mm']:.2f} mm, bonded "
+                       f"{member.post['bonded_width_mm']:.1f} mm", fontsize=10)
+    figure.suptitle(f"Last time of each member; T {low:g}-{high:.0f} K in all", fontsize=11)
+    figure.tight_layout()
+    figure.savefig(path, dpi=110)
+    plt.close(figure)
+    return path
+
+
 def write_json(members: list[Member], path: Path) -> Path:
     """``{"runs": [...]}``: per member its values, status, end time, verdict and post figures."""
     runs = []
@@ -378,4 +425,5 @@ def run_study(template: Path, study_dir: Path, parameters: list[Parameter],
     run_members(members, n_procs > 1, jobs, start)
     sys.stderr.write("\n")
     write_json(members, Path(study_dir) / "results.json")
+    write_sections(members, Path(study_dir) / "sections.png")
     return members, write_csv(members, Path(study_dir) / "results.csv")

@@ -163,13 +163,17 @@ def make_members(template: Path, study_dir: Path, parameters: list[Parameter],
     return members
 
 
-def _simulated_time(case: Path) -> float:
-    """Latest time of the solver's balance table (0 before the run starts)."""
+def _leg_fraction(case: Path, end_time: float) -> float:
+    """How far the running leg of a member is, from its start (0, the time
+    it started from or resumed at) to its end time, by the solver's balance
+    table (0 before the solver starts)."""
     try:
         times = Case(case).latest_table(*BALANCES)["Time"]
     except (FileNotFoundError, IndexError, ValueError):
         return 0.0
-    return float(times[-1]) if len(times) else 0.0
+    if len(times) < 2 or not end_time > times[0]:
+        return 0.0
+    return float(min(1.0, (times[-1] - times[0]) / (end_time - times[0])))
 
 
 def _progress(done: float, total: int, label: str, started: float) -> None:
@@ -279,7 +283,7 @@ def run_members(members: list[Member], parallel: bool, jobs: int = 1,
             finish_member(run.member, run.process.returncode, time.time() - run.begin)
             running.remove(run)
             done += 1
-        fractions = sum(min(1.0, _simulated_time(r.member.path) / r.end_time) for r in running)
+        fractions = sum(_leg_fraction(r.member.path, r.end_time) for r in running)
         _progress(done + fractions, len(members),
                   " | ".join(_label(r.member) for r in running), started)
         if running:

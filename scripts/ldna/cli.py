@@ -9,7 +9,7 @@ import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
-from . import benchmark, meshing
+from . import benchmark, meshing, state
 
 
 def _mesh_levels(args: argparse.Namespace) -> int:
@@ -207,8 +207,6 @@ def _post(args: argparse.Namespace) -> int:
 
 
 def _save_state(args: argparse.Namespace) -> int:
-    from . import state
-
     target = state.save_state(Path(args.run), Path(args.target), args.time, args.history)
     print(f"{target}: the state of {args.run} at t = {state.state_time(target)} s; start a run "
           f"from it with ./Allrun -start-from {target}")
@@ -390,8 +388,9 @@ def build_parser() -> argparse.ArgumentParser:
     save.add_argument("run", type=_case, help="the run (reconstructed)")
     save.add_argument("target", help="folder to write; must not exist")
     save.add_argument("--time", help="the reconstructed time to keep [the latest]")
-    save.add_argument("--history", type=_positive_float, default=2.0,
-                      help="seconds of tables before the time to keep [2]")
+    save.add_argument("--history", type=_positive_float, default=state.HISTORY_SECONDS,
+                      help="seconds of tables before the time to keep "
+                           f"[{state.HISTORY_SECONDS:g}]")
     save.set_defaults(func=_save_state)
 
     post.add_argument("--json", action="store_true",

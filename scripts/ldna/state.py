@@ -34,6 +34,10 @@ HISTORY_TABLES = (("meltPoolMetrics", "meltPoolMetrics"), ("balances", "balances
 #: tables' 5 400 rows a second would be most of the state's size, and the
 #: judge's window means and slopes do not need them
 HISTORY_ROW_INTERVAL = 1e-3
+#: Seconds of tables kept by default: four windows of the template's ripple
+#: (0.4-0.53 s) before the state's time, so that a continued run is judged
+#: from its first step
+HISTORY_SECONDS = 3.0
 #: Subfolder of a saved state holding its tables
 HISTORY = "history"
 
@@ -61,7 +65,7 @@ def _table_text(case: Path, name: str, file: str, start: float, end: float) -> s
 
 
 def save_state(run: Path, target: Path, time: str | None = None,
-               history_seconds: float = 2.0) -> Path:
+               history_seconds: float = HISTORY_SECONDS) -> Path:
     """Save ``run``'s reconstructed state at ``time`` (default its latest)
     and its tables of the ``history_seconds`` before it into ``target``."""
     run, target = Path(run), Path(target)

@@ -7,7 +7,8 @@ collects parameters, run time and the bead metrics of each member's last
 ``meltPoolMetrics`` row into one CSV.  ``results.json`` holds per member
 what ``ldna post --json`` reports at its last time (with its pictures in the
 member's ``pictures/``) and ``ldna steady``'s verdict; ``sections.png`` the
-members' transverse sections side by side on one temperature scale.
+members' transverse sections through the laser's target side by side, on
+one temperature scale.
 
 A study can start every member from the state of a steady run of the scene
 (``--start-from RUN [--start-time T]``, the template's ``Allrun -start-from``):
@@ -335,8 +336,12 @@ def _cropped(image: np.ndarray) -> np.ndarray:
 
 def write_sections(members: list[Member], path: Path) -> Path | None:
     """The finished members' transverse sections side by side (fusion line,
-    bead, temperature), drawn again on one temperature scale: from the
-    lowest ambient to the hottest member's peak metal temperature."""
+    free surface, temperature) through the laser's target (the wires'
+    midpoint plus the laser's offset: where the pool forms and the laser
+    acts, so a member's own process shows within its run; the bead section
+    behind the pool holds metal laid seconds before), drawn again on one
+    temperature scale: from the lowest ambient to the hottest member's peak
+    metal temperature."""
     done = [m for m in members if m.status == "done" and m.post]
     if not done:
         return None
@@ -353,15 +358,20 @@ def write_sections(members: list[Member], path: Path) -> Path | None:
     for axis in axes.flat:
         axis.axis("off")
     for axis, member in zip(axes.flat, done):
-        _, pictures, _ = post_process(member.path, member.path / "pictures" / "common-scale",
-                                      temperature_range=(low, high))
+        case = Case(member.path)
+        target = 1e-3 * (case.scalar(CASE_PARAMETERS, "processPosition")
+                         + case.scalar(CASE_PARAMETERS, "laserOffset"))
+        _, pictures, _ = post_process(member.path, member.path / "pictures" / "laser-target",
+                                      bead_section=target, temperature_range=(low, high))
         transverse = next(p for p in pictures if p.name == "transverse.png")
         axis.imshow(_cropped(plt.imread(transverse)))
         axis.set_title(" ".join(f"{k}={v}" for k, v in member.values.items())
-                       + f"\nbead {member.post['bead_width_mm']:.1f} x "
-                       f"{member.post['bead_height_mm']:.2f} mm, bonded "
+                       + f"\npool {member.post['pool_length_mm']:.1f} x "
+                       f"{member.post['pool_width_mm']:.1f} mm, substrate surface at most "
+                       f"{member.post['peak_surface_temperature_K']:.0f} K, bonded "
                        f"{member.post['bonded_width_mm']:.1f} mm", fontsize=10)
-    figure.suptitle(f"Last time of each member; T {low:g}-{high:.0f} K in all", fontsize=11)
+    figure.suptitle(f"Through the laser's target at each member's last time; T {low:g}-"
+                    f"{high:.0f} K in all", fontsize=11)
     figure.tight_layout()
     figure.savefig(path, dpi=110)
     plt.close(figure)

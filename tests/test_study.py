@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 import sys
 from pathlib import Path
 
@@ -71,6 +72,7 @@ def test_study_of_a_three_by_one_grid(tmp_path: Path) -> None:
 #: The resumed study: the first leg's end and the raised end time [s]
 FIRST_LEG_END = 0.01
 RESUMED_END = 0.02
+SECOND_LEG_END = 0.025
 #: The template's largest time step [s]: a run ends within half a step of its end time
 MAX_DELTA_T = 1e-3
 
@@ -129,6 +131,17 @@ def test_study_members_start_from_a_run(tmp_path: Path) -> None:
     results = json.loads((study_dir / "results.json").read_text())["runs"]
     assert results[0]["status"] == "done" and results[0]["laser_power_W"] == 1000
     assert abs(results[0]["end_time_s"] - RESUMED_END) < MAX_DELTA_T
+
+    # Resumed, such a member continues from its latest written time, not
+    # from the time it started from
+    run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} --set laserPower=1000 "
+                  f"--start-from {source} --end-time {SECOND_LEG_END} --resume",
+        log_name="study.resume")
+    last_start = re.findall(r"Create mesh for time = (\S+)",
+                            (member / "log.ldnaFoam").read_text())[-1]
+    assert abs(float(last_start) - RESUMED_END) < MAX_DELTA_T, last_start
+    results = json.loads((study_dir / "results.json").read_text())["runs"]
+    assert abs(results[0]["end_time_s"] - SECOND_LEG_END) < MAX_DELTA_T
 
 
 def test_a_failed_parallel_member_reports_its_foam_error(tmp_path: Path) -> None:

@@ -334,6 +334,16 @@ def _cropped(image: np.ndarray) -> np.ndarray:
     return image[rows[0]:rows[-1] + 1, columns[0]:columns[-1] + 1]
 
 
+def _laser_target(case: Path) -> float | None:
+    """Where the laser aims along the weld [m] (the wires' midpoint plus its
+    offset), or None for a template without those knobs (its bead section)."""
+    try:
+        return 1e-3 * (Case(case).scalar(CASE_PARAMETERS, "processPosition")
+                       + Case(case).scalar(CASE_PARAMETERS, "laserOffset"))
+    except (KeyError, ValueError, FileNotFoundError):
+        return None
+
+
 def write_sections(members: list[Member], path: Path) -> Path | None:
     """The finished members' transverse sections side by side (fusion line,
     free surface, temperature) through the laser's target (the wires'
@@ -350,7 +360,11 @@ def write_sections(members: list[Member], path: Path) -> Path | None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    low = min(Case(m.path).scalar(CASE_PARAMETERS, "ambientTemperature") for m in done)
+    try:
+        low = min(Case(m.path).scalar(CASE_PARAMETERS, "ambientTemperature") for m in done)
+    except (KeyError, ValueError, FileNotFoundError):
+        # A template without the knob: from absolute zero
+        low = 0.0
     high = max(m.post["peak_metal_temperature_K"] for m in done)
     columns = min(3, len(done))
     rows = math.ceil(len(done) / columns)
@@ -358,11 +372,9 @@ def write_sections(members: list[Member], path: Path) -> Path | None:
     for axis in axes.flat:
         axis.axis("off")
     for axis, member in zip(axes.flat, done):
-        case = Case(member.path)
-        target = 1e-3 * (case.scalar(CASE_PARAMETERS, "processPosition")
-                         + case.scalar(CASE_PARAMETERS, "laserOffset"))
         _, pictures, _ = post_process(member.path, member.path / "pictures" / "laser-target",
-                                      bead_section=target, temperature_range=(low, high))
+                                      bead_section=_laser_target(member.path),
+                                      temperature_range=(low, high))
         transverse = next(p for p in pictures if p.name == "transverse.png")
         axis.imshow(_cropped(plt.imread(transverse)))
         axis.set_title(" ".join(f"{k}={v}" for k, v in member.values.items())

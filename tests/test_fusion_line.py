@@ -21,6 +21,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from foamlib import FoamFile
+
 from ldna.case import Case
 from ldna.post import (POST_FUNCTION, BeadMetrics, fusion_temperature,
                        function_object_metrics, read_fusion_line)
@@ -220,3 +222,45 @@ def test_hot_gas_over_a_solid_substrate_is_no_fusion(level0_mesh: Case) -> None:
     case.write_field("alpha.metal", time="0", values=alpha)
     result = measure(case)
     assert result.penetration == 0 and result.fused_area == 0 and result.bonded_width == 0
+
+
+#: A bead wider than the template's refined zone: its edges on faces of the
+#: coarser cells beside it (y), its top on a face of both sizes (z) [m]
+WIDE_BEAD_HALF_WIDTH = 9.5e-3
+WIDE_BEAD_HEIGHT = 0.9e-3
+
+
+def nearest_face(case: Case, axis: int, position: float) -> float:
+    """The mesh's point coordinate nearest ``position`` along ``axis`` [m]."""
+    points = np.asarray(FoamFile(case / "constant" / "polyMesh" / "points")[None])
+    coordinates = np.unique(points[:, axis])
+    return float(coordinates[np.abs(coordinates - position).argmin()])
+
+
+@pytest.mark.parametrize("section_offset", [0.0, 0.5, 1.5, 3.5, 6.0])
+def test_every_section_of_a_uniform_bead_has_its_area(level0_mesh: Case,
+                                                      section_offset: float) -> None:
+    """A rectangular bead, uniform along the weld, whose edges lie in the
+    coarser cells beside the refined bead zone.  Every section, whether its
+    slice's centre cuts the coarser cells through their middle or near a
+    face, and whether the bead there is in refined or coarse cells, has the
+    bead's own area, width and height: a section counts every cell its
+    plane cuts (the sections offset by whole and half refined cells)."""
+    case = level0_mesh
+    half_width = nearest_face(case, 1, WIDE_BEAD_HALF_WIDTH)
+    height = nearest_face(case, 2, WIDE_BEAD_HEIGHT)
+    x, y, z = case.field("C", "0").T
+    in_bead = (z >= 0) & (z < height) & (np.abs(y) < half_width)
+    case.write_field("T", time="0", values=np.full_like(z, FIELD_RANGE[0]))
+    case.write_field("alpha.metal", time="0", values=np.where((z < 0) | in_bead, 1.0, 0.0))
+    case.write_field("fillerFraction", time="0", values=np.where(z >= 0, 1.0, 0.0))
+    seam = 1e-3 * case.scalar("system/caseParameters", "processPosition")
+    spacing = column_spacing(case)
+    section = seam + 11e-3 + section_offset * spacing
+    result = function_object_metrics(case, 0.0, bead_section=section)
+    print(f"section {1e3 * result.bead_section:.3f} mm: area {1e6 * result.bead_area:.6f} mm2 "
+          f"(exact {2e6 * half_width * height:.6f}), width {1e3 * result.bead_width:.4f} mm "
+          f"(exact {2e3 * half_width:.4f}), height {1e3 * result.bead_height:.4f} mm")
+    assert result.bead_area == pytest.approx(2 * half_width * height, rel=TABLE_PRECISION)
+    assert result.bead_width == pytest.approx(2 * half_width, rel=TABLE_PRECISION)
+    assert result.bead_height == pytest.approx(height, rel=TABLE_PRECISION)

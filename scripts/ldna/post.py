@@ -181,7 +181,9 @@ def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
     slice at ``bead_section`` [m] (0 without bead there).
 
     The slices are the meltPoolMetrics function object's: one shortest cell
-    long along the weld, from the mesh's upstream end.
+    long along the weld, from the mesh's upstream end; the section is the
+    plane through the slice's centre and holds every cell it cuts (a longer
+    cell beside a refined bead zone too).
     """
     low, high = _cell_bounds(grid)
     centre = 0.5 * (low + high)
@@ -195,8 +197,8 @@ def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
     def slice_of(w: np.ndarray) -> np.ndarray:
         return np.clip(np.floor((w - origin) / slice_length).astype(int), 0, n_slices - 1)
 
-    in_slice = (centre[:, 2] >= surface_height) & (
-        slice_of(centre[:, 0]) == slice_of(np.array([bead_section]))[0])
+    plane = origin + (slice_of(np.array([bead_section]))[0] + 0.5) * slice_length
+    in_slice = (centre[:, 2] >= surface_height) & (low[:, 0] <= plane) & (high[:, 0] > plane)
     in_bead = in_slice & (alpha >= metal_threshold)
     if not in_bead.any():
         return 0.0

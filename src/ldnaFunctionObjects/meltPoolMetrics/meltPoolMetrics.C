@@ -195,6 +195,25 @@ Foam::label Foam::functionObjects::meltPoolMetrics::slice(const scalar w) const
 }
 
 
+Foam::labelPair Foam::functionObjects::meltPoolMetrics::slices
+(
+    const boundBox& cellBounds
+) const
+{
+    // Slice i's centre plane lies at origin + (i + 1/2) L: inside the cell
+    // for i from ceil(min/L - 1/2) to ceil(max/L - 1/2) - 1
+    const auto first = [&](const scalar w)
+    {
+        return label(std::ceil((w - sliceOrigin_)/sliceLength_ - 0.5));
+    };
+    return labelPair
+    (
+        max(first(cellBounds.min().x()), 0),
+        min(first(cellBounds.max().x()) - 1, nSlices_ - 1)
+    );
+}
+
+
 Foam::scalar
 Foam::functionObjects::meltPoolMetrics::sliceCentre(const label i) const
 {
@@ -281,10 +300,14 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         if (c.z() >= surfaceHeight_)
         {
             const scalar area = alpha[celli]*V[celli]/bb.span().x();
-            beadArea[slice(c.x())] += area;
-            if (fillerPtr)
+            const labelPair cut = slices(bb);
+            for (label i = cut.first(); i <= cut.second(); ++i)
             {
-                baseArea[slice(c.x())] += (1 - (*fillerPtr)[celli])*area;
+                beadArea[i] += area;
+                if (fillerPtr)
+                {
+                    baseArea[i] += (1 - (*fillerPtr)[celli])*area;
+                }
             }
         }
     }
@@ -337,55 +360,94 @@ Foam::functionObjects::meltPoolMetrics::calculate()
     m.beadSection = sliceCentre(beadSlice);
     m.beadArea = beadArea[beadSlice];
 
-    // Pass 2: the bead in its section.  Each row of cells above the surface
-    // reaches from toe to toe, where the metal fraction crosses
-    // metalThreshold on a link across the weld (linear along the link);
-    // the toes on the surface are extrapolated linearly from the two
-    // lowest rows (a toe is a wedge, which the lowest row's centres see
-    // half a cell up); the top is where the fraction crosses on a vertical
-    // link, or the highest metal centre
-    auto inSection = [&](const point& c)
-    {
-        return c.z() >= surfaceHeight_ && slice(c.x()) == beadSlice;
-    };
+    // Pass 2: the bead in its section.  Each row of the section's shortest
+    // cells above the surface reaches from toe to toe, where the metal
+    // fraction crosses metalThreshold on a link across the weld (linear
+    // along the link); the toes on the surface are extrapolated linearly
+    // from the two lowest rows (a toe is a wedge, which the lowest row's
+    // centres see half a cell up), then widened to the metal of the longer
+    // cells the section cuts on the surface; the top is where the fraction
+    // crosses on a vertical link, or the highest metal centre
     const scalar rowTolerance = rowHeightTolerance*sliceLength_;
+    enum sectionCell : label { outside, shortCell, longCell, longSurfaceCell };
+    scalarField section(V.size(), scalar(outside));
+    forAll(V, celli)
+    {
+        const boundBox& bb = cellBounds_[celli];
+        const labelPair cut = slices(bb);
+        if
+        (
+            bb.centre().z() >= surfaceHeight_
+         && cut.first() <= beadSlice && beadSlice <= cut.second()
+        )
+        {
+            section[celli] =
+                bb.span().x() <= sliceLength_ + rowTolerance ? shortCell
+              : mag(bb.min().z() - surfaceHeight_) <= rowTolerance
+              ? longSurfaceCell
+              : longCell;
+        }
+    }
+
     DynamicList<vector2D> rowPoints;   // (height, across)
     scalar top = -GREAT;
+    scalar longLeftToe = GREAT;
+    scalar longRightToe = -GREAT;
     forAll(V, celli)
     {
         const point c = weldFrame(mesh_.C()[celli]);
-        if (alpha[celli] >= metalThreshold_ && inSection(c))
+        if (alpha[celli] >= metalThreshold_ && section[celli] != outside)
         {
-            rowPoints.append(vector2D(c.z(), c.y()));
             top = max(top, c.z());
+            if (section[celli] == shortCell)
+            {
+                rowPoints.append(vector2D(c.z(), c.y()));
+            }
+            else if (section[celli] == longSurfaceCell)
+            {
+                longLeftToe = min(longLeftToe, c.y());
+                longRightToe = max(longRightToe, c.y());
+            }
         }
     }
-    forAllLinks
+    ldna::forAllCellLinks
     (
-        T, alpha,
-        [&](const point& a, const point& b, const scalar, const scalar,
+        mesh_, section, alpha.primitiveField(),
+        [&](const point& pa, const point& pb, const scalar sa, const scalar sb,
             const scalar alphaA, const scalar alphaB)
         {
             if
             (
-                !inSection(a) || !inSection(b)
+                sa == outside || sb == outside
              || (alphaA >= metalThreshold_) == (alphaB >= metalThreshold_)
             )
             {
                 return;
             }
+            const point a = weldFrame(pa);
+            const point b = weldFrame(pb);
             const point p =
                 a + ((metalThreshold_ - alphaA)/(alphaB - alphaA))*(b - a);
-            if (mag(b.z() - a.z()) <= rowTolerance)
+            if (mag(b.z() - a.z()) > rowTolerance)
+            {
+                if (mag(b.z() - a.z()) >= 0.5*mag(b - a))
+                {
+                    top = max(top, p.z());
+                }
+            }
+            else if (sa == shortCell && sb == shortCell)
             {
                 rowPoints.append(vector2D(p.z(), p.y()));
             }
-            else if (mag(b.z() - a.z()) >= 0.5*mag(b - a))
+            else if (sa == longSurfaceCell && sb == longSurfaceCell)
             {
-                top = max(top, p.z());
+                longLeftToe = min(longLeftToe, p.y());
+                longRightToe = max(longRightToe, p.y());
             }
         }
     );
+    reduce(longLeftToe, minOp<scalar>());
+    reduce(longRightToe, maxOp<scalar>());
     reduce(top, maxOp<scalar>());
 
     List<List<vector2D>> allRowPoints(Pstream::nProcs());
@@ -400,7 +462,7 @@ Foam::functionObjects::meltPoolMetrics::calculate()
         )
     );
 
-    if (points.size())
+    if (points.size() || longLeftToe <= longRightToe)
     {
         // The two lowest rows: height and extent across the weld
         std::sort
@@ -425,8 +487,8 @@ Foam::functionObjects::meltPoolMetrics::calculate()
             row.z() = max(row.z(), pt.y());
         }
 
-        scalar leftToe = rows[0].y();
-        scalar rightToe = rows[0].z();
+        scalar leftToe = nRows ? rows[0].y() : GREAT;
+        scalar rightToe = nRows ? rows[0].z() : -GREAT;
         if (nRows == 2)
         {
             const scalar s =
@@ -434,6 +496,8 @@ Foam::functionObjects::meltPoolMetrics::calculate()
             leftToe -= s*(rows[1].y() - rows[0].y());
             rightToe += s*(rows[0].z() - rows[1].z());
         }
+        leftToe = min(leftToe, longLeftToe);
+        rightToe = max(rightToe, longRightToe);
 
         m.beadWidth = max(rightToe - leftToe, scalar(0));
         m.beadHeight = top - surfaceHeight_;

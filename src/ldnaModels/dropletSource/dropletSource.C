@@ -27,6 +27,16 @@ namespace fv
 }
 }
 
+// The cut radius of an inserted sphere lies between R and this multiple of
+// it: a planar cut falls short of the sphere by less than a third of its
+// volume at the 1.5 cells per radius insertion allows
+static const Foam::scalar maxCutRadius = 1.5;
+
+// Bisection of the cut radius: stop when the bracket is this share of R
+// (the volume then within 3e-12 of its own), or after so many halvings
+static const Foam::scalar cutRadiusTolerance = 1e-12;
+static const Foam::label maxCutRadiusIterations = 60;
+
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -539,7 +549,8 @@ Foam::List<Foam::scalar> Foam::fv::dropletSource::pulseOnsets
 }
 
 
-Foam::scalar Foam::fv::dropletSource::insertSphere
+Foam::fv::dropletSource::insertedSphere
+Foam::fv::dropletSource::insertSphere
 (
     metalGasMixture& mixture,
     volVectorField& U,
@@ -552,40 +563,82 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
 
-    // The sphere is the iso-surface -R of minus the distance from its
+    // The sphere is the iso-surface -r of minus the distance from its
     // centre at the mesh points; isoCutCell gives each cell's "submerged"
     // volume fraction, where the point values exceed the iso-value (the
     // liquid side in isoAdvection): inside the sphere
     scalarField minusDistance(-mag(mesh_.points() - centre));
     isoCutCell cutter(mesh_, minusDistance);
 
-    DynamicList<label> cells;
-    DynamicList<scalar> fractions;
+    DynamicList<label> candidates;
     forAll(C, celli)
     {
-        // Cells whose centre is within R plus the cell's size
-        if (mag(C[celli] - centre) > R + 2*cbrt(V[celli]))
+        // Cells whose centre is within the largest cut radius plus the
+        // cell's size
+        if (mag(C[celli] - centre) <= maxCutRadius*R + 2*cbrt(V[celli]))
         {
-            continue;
-        }
-        const label status = cutter.calcSubCell(celli, -R);
-        const scalar f =
-            status == -1 ? 1 : (status == 1 ? 0 : cutter.volumeOfFluid());
-        if (f > 0)
-        {
-            cells.append(celli);
-            fractions.append(f);
+            candidates.append(celli);
         }
     }
 
-    // The cut cells take what the full ones leave of the exact volume, in
-    // proportion to their fractions; a cut cell the scaling would overfill
-    // is filled, and the rest shared again among the others
-    const scalar exactVolume = 4.0/3.0*pi*pow3(R);
-    forAll(fractions, i)
+    // Each candidate's fraction of the sphere cut at radius r, and the
+    // sphere's volume on the mesh
+    scalarField fractions(candidates.size());
+    const auto cutAt = [&](const scalar r)
     {
-        fractions[i] = min(fractions[i], scalar(1));
+        scalar volume = 0;
+        forAll(candidates, i)
+        {
+            const label status = cutter.calcSubCell(candidates[i], -r);
+            fractions[i] =
+                status == -1 ? 1
+              : status == 1 ? 0
+              : min(cutter.volumeOfFluid(), scalar(1));
+            volume += fractions[i]*V[candidates[i]];
+        }
+        return returnReduce(volume, sumOp<scalar>());
+    };
+
+    // The cut is planar within each cell, inside the sphere, so at r = R
+    // the sphere falls short of its volume (by 14 % at two cells per
+    // radius): the cut radius r >= R that gives the exact volume is found
+    // by bisection, which keeps the sphere's shape
+    const scalar exactVolume = 4.0/3.0*pi*pow3(R);
+    insertedSphere sphere{0, 0, cutAt(R), 0, R};
+    if (sphere.cutVolume < exactVolume && cutAt(maxCutRadius*R) > exactVolume)
+    {
+        scalar low = R;
+        scalar high = maxCutRadius*R;
+        for (label i = 0; i < maxCutRadiusIterations; ++i)
+        {
+            const scalar middle = 0.5*(low + high);
+            (cutAt(middle) < exactVolume ? low : high) = middle;
+            if (high - low < cutRadiusTolerance*R)
+            {
+                break;
+            }
+        }
+        sphere.cutRadius = high;
     }
+    cutAt(sphere.cutRadius);
+
+    DynamicList<label> cells;
+    DynamicList<scalar> cellFractions;
+    forAll(candidates, i)
+    {
+        if (fractions[i] > 0)
+        {
+            cells.append(candidates[i]);
+            cellFractions.append(fractions[i]);
+        }
+    }
+    fractions.transfer(cellFractions);
+    sphere.cells = returnReduce(cells.size(), sumOp<label>());
+
+    // The cut cells take what the full ones leave of the exact volume (the
+    // bisection's remainder, or all of it where the cut radius could not
+    // reach it), in proportion to their fractions; a cut cell the scaling
+    // would overfill is filled, and the rest shared again among the others
     for (label pass = 0; pass < 20; ++pass)
     {
         scalar fixedVolume = 0;
@@ -620,11 +673,11 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
     const volScalarField& rho1 = mixture.rho1();
     const volScalarField& rho2 = mixture.rho2();
 
-    scalar mass = 0;
     forAll(cells, i)
     {
         const label celli = cells[i];
         const scalar f = fractions[i];
+        sphere.volume += f*V[celli];
 
         // The droplet displaces the gas it takes the place of
         const scalar a = alpha1[celli];
@@ -644,10 +697,49 @@ Foam::scalar Foam::fv::dropletSource::insertSphere
                 (rhoOld - dAlpha*r2)*U[celli] + dAlpha*rFiller*velocity
             )/rhoNew;
 
-        mass += dAlpha*rFiller*V[celli];
+        sphere.mass += dAlpha*rFiller*V[celli];
     }
 
-    return returnReduce(mass, sumOp<scalar>());
+    reduce(sphere.mass, sumOp<scalar>());
+    reduce(sphere.volume, sumOp<scalar>());
+    return sphere;
+}
+
+
+void Foam::fv::dropletSource::reportInsertion
+(
+    const label wirei,
+    const scalar onset,
+    const vector& centre,
+    const scalar R,
+    const insertedSphere& sphere
+)
+{
+    if (!insertionFile_.valid())
+    {
+        insertionFile_.reset(new tableFile(mesh_, name_, "insertions"));
+        insertionFile_->writeHeader
+        (
+            "Droplets inserted as spheres, one row each: the wire (1, 2 ..."
+            " in the order of 'wires'), its pulse's onset [s], the centre [m]"
+            " and radius [m], the cells reached, the volume the cells cut at"
+            " the radius give [m3], the radius of the cut that gives the"
+            " sphere's volume [m], the volume put in [m3] and the metal mass"
+            " added [kg]",
+            {
+                "wire", "onset", "centreX", "centreY", "centreZ", "radius",
+                "cells", "cutVolume", "cutRadius", "volume", "mass"
+            }
+        );
+    }
+    insertionFile_->writeRow
+    (
+        {
+            scalar(wirei + 1), onset, centre.x(), centre.y(), centre.z(), R,
+            scalar(sphere.cells), sphere.cutVolume, sphere.cutRadius,
+            sphere.volume, sphere.mass
+        }
+    );
 }
 
 
@@ -927,23 +1019,22 @@ bool Foam::fv::dropletSource::insert
     const scalar t0 = t1 - time.deltaTValue();
 
     bool inserted = false;
-    for (wireStream& wire : wires_)
+    forAll(wires_, wirei)
     {
+        wireStream& wire = wires_[wirei];
         for (const scalar onset : pulseOnsets(wire.frequency, t0, t1))
         {
             // Where the droplet has flown since it detached within the step
             // (ballistically), so that its position does not depend on the
             // time steps
             const vector velocity = dropletVelocity(wire, onset);
-            wire.addedMass += insertSphere
-            (
-                mixture,
-                U,
-                wire,
-                centreAt(wire, onset) + (t1 - onset)*velocity,
-                radiusAt(wire, onset),
-                velocity
-            );
+            const vector centre =
+                centreAt(wire, onset) + (t1 - onset)*velocity;
+            const scalar R = radiusAt(wire, onset);
+            const insertedSphere sphere =
+                insertSphere(mixture, U, wire, centre, R, velocity);
+            wire.addedMass += sphere.mass;
+            reportInsertion(wirei, onset, centre, R, sphere);
             inserted = true;
         }
         wire.onTime += switchOnTime(wire.frequency, t0, t1);

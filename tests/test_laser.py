@@ -201,6 +201,64 @@ def test_monte_carlo_sampling_noise(laser_slab_case: Case) -> None:
     assert -0.8 < slope < -0.2
 
 
+def footprint_share(x0: np.ndarray, x1: np.ndarray, y0: np.ndarray, y1: np.ndarray,
+                    target: tuple[float, float], radius: float) -> np.ndarray:
+    """Share of eq. 48's Gaussian, 3 P/(pi r^2) exp(-3 r^2 / r_l^2), that falls
+    on the rectangles [x0, x1] x [y0, y1] (separable: a product of erfs)."""
+    k = math.sqrt(3) / radius
+    erf = np.vectorize(math.erf)
+    return 0.25 * ((erf(k * (x1 - target[0])) - erf(k * (x0 - target[0])))
+                   * (erf(k * (y1 - target[1])) - erf(k * (y0 - target[1]))))
+
+
+#: The beam's target off the cell corners by a fraction of a cell [m]: the
+#: pixels the beam is traced as (64 over 4 radii, 1/16 mm) then straddle
+#: the cells' faces
+OFF_GRID = (0.1e-3, 0.037e-3)
+#: What normalising the pixels to the whole beam adds (the Gaussian beyond
+#: two radii, exp(-12)) and round-off: a share of a P per cell
+PIXEL_NORMALISATION = 1e-5
+
+
+@pytest.mark.parametrize("shift", [(0.0, 0.0), OFF_GRID])
+def test_each_surface_cell_gets_the_beam_over_its_footprint(laser_slab_case: Case,
+                                                            shift: tuple[float, float]) -> None:
+    """gaussianSurface on the flat slab: each surface cell absorbs a times the
+    beam's power over its footprint (eq. 48 integrated here), not only the
+    slab in total.  With the target on a cell corner the beam's pixels tile
+    the cells; off it, a pixel across a face gives its power to one side, so
+    a cell may be off by at most the power in a band of half a pixel on both
+    sides of its edges."""
+    case = laser_slab_case
+    target = (CENTRE[0] + shift[0], CENTRE[1] + shift[1])
+    entry = laser_entry("gaussianSurface").replace(
+        f"position        ({CENTRE[0]} {CENTRE[1]} {CENTRE[2]});",
+        f"position        ({target[0]} {target[1]} {CENTRE[2]});")
+    write_fv_options(case, entry)
+    case.run("ldnaFoam")
+
+    absorbed = absorbed_per_cell(case)
+    centres = cell_centres(case)
+    top = np.isclose(centres[:, 2], CENTRE[2] - 0.5 * CELL)
+    assert absorbed[~top].sum() < 1e-9 * POWER, "all the power in the surface cells"
+    x0, y0 = centres[top, 0] - 0.5 * CELL, centres[top, 1] - 0.5 * CELL
+    x1, y1 = x0 + CELL, y0 + CELL
+    expected = ABSORPTIVITY * POWER * footprint_share(x0, x1, y0, y1, target, BEAM_RADIUS)
+    pixel = 4 * BEAM_RADIUS / 64
+    half = 0.5 * pixel if shift != (0.0, 0.0) else 0.0
+    band = ABSORPTIVITY * POWER * (
+        footprint_share(x0 - half, x1 + half, y0 - half, y1 + half, target, BEAM_RADIUS)
+        - footprint_share(x0 + half, x1 - half, y0 + half, y1 - half, target, BEAM_RADIUS))
+    allowed = band + PIXEL_NORMALISATION * ABSORPTIVITY * POWER
+    difference = np.abs(absorbed[top] - expected)
+    worst = int(np.argmax(difference / allowed))
+    print(f"target shifted {1e3 * np.array(shift)} mm: largest cell difference "
+          f"{difference.max():.4e} W (peak cell {expected.max():.4f} W); worst against its "
+          f"bound: {difference[worst]:.4e} of {allowed[worst]:.4e} W; "
+          f"sum |difference| {difference.sum():.4f} W of a P {ABSORPTIVITY * POWER:.1f} W")
+    assert np.all(difference <= allowed)
+
+
 @pytest.mark.parametrize("model", ("beerLambert", "monteCarlo"))
 def test_serial_and_parallel_agree(laser_slab_case: Case, model: str) -> None:
     """A tilted beam crosses the processor boundary at x = 4 mm.

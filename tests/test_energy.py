@@ -7,9 +7,12 @@ latent, both phases) must equal P t.
 """
 from __future__ import annotations
 
+import shutil
+
 import numpy as np
 import pytest
 
+from conftest import TEMPLATE
 from ldna.case import Case
 
 
@@ -97,3 +100,110 @@ def test_metal_property_table_is_consistent(energy_box_case: Case) -> None:
     expected_fraction = np.clip((T - solidus) / (liquidus - solidus), 0, 1)
     assert np.abs(table["liquidFraction"] - expected_fraction).max() < 1e-9
     assert np.abs(table["enthalpy"] - hs - latent * expected_fraction).max() < TABLE_TOLERANCE * scale
+
+
+#: The literature data of docs/physics-data.md, typed here from their
+#: sources (not read from the case): 316L (Kim, ANL-75-55, 1975) and the
+#: AISI 1024 substrate (Incropera & DeWitt Table A.1 for the solid, liquid
+#: iron of Assael et al. 2006/2017).  Each: solidus, liquidus [K], latent
+#: heat [J/kg], Cp solid (polynomial in T), Cp liquid, density solid and
+#: liquid (polynomials), conductivity solid ((T, k) table or polynomial)
+#: and liquid (polynomial)
+LITERATURE = {
+    "metal": {
+        "solidus": 1675.0, "liquidus": 1708.0, "latent": 2.68e5,
+        "cp_solid": (459.29, 0.1329), "cp_liquid": (790.0,),
+        "rho_solid": (8084.2, -0.42086, -3.8942e-5), "rho_liquid": (7432.7, 0.039338, -1.8007e-4),
+        "k_solid": (9.248, 0.01571), "k_liquid": (12.41, 0.003279),
+    },
+    "substrate": {
+        "solidus": 1760.0, "liquidus": 1785.0, "latent": 2.70e5,
+        "cp_solid": (520.94, 0.15942), "cp_liquid": (820.0,),
+        "rho_solid": (7950.0, -0.34), "rho_liquid": (8712.0, -0.926),
+        "k_solid": ((200, 41.0), (300, 41.0), (400, 42.2), (600, 39.7), (800, 35.0),
+                    (1000, 27.6), (1760, 33.0)),
+        "k_liquid": (35.0,),
+    },
+}
+#: Where the table is compared [K]: rows of it (every 5 K), solid and liquid
+SOLID_TEMPERATURES = (300.0, 800.0, 1200.0, 1500.0)
+LIQUID_TEMPERATURES = (1900.0, 2100.0, 2500.0)
+#: The table's digits (writePrecision 6 of the function objects' tables)
+DIGITS = 2e-6
+#: The enthalpy's reference temperature [K] (metalGasMixture)
+ENTHALPY_REFERENCE = 298.15
+
+
+def polynomial(coefficients: tuple[float, ...], T: float) -> float:
+    return sum(c * T**i for i, c in enumerate(coefficients))
+
+
+def conductivity(data: tuple, T: float) -> float:
+    """A polynomial, or linear in a (T, k) table."""
+    if isinstance(data[0], tuple):
+        return float(np.interp(T, *zip(*data)))
+    return polynomial(data, T)
+
+
+def cp_integral(coefficients: tuple[float, ...], T0: float, T1: float) -> float:
+    return sum(c * (T1 ** (i + 1) - T0 ** (i + 1)) / (i + 1) for i, c in enumerate(coefficients))
+
+
+@pytest.mark.parametrize("name", list(LITERATURE))
+def test_metal_properties_are_the_literature_data(energy_box_case: Case, name: str) -> None:
+    """The properties the solver evaluates (its table, postProcessing/
+    metalGasMixture/<time>/<metal>.dat) are the literature's at solid and
+    liquid temperatures: heat capacity, density, conductivity, and the
+    enthalpy from 298.15 K, analytic below the solidus, rising by the
+    liquid Cp above the liquidus, and by the latent heat plus a heat
+    capacity between the two metals' across the melting range."""
+    case = energy_box_case
+    # The template's materials in full: the substrate's metal too
+    properties = "constant/thermophysicalProperties"
+    shutil.copy(TEMPLATE / properties, case / properties)
+    (case / "0" / "fillerFraction").write_text(
+        (case / "0" / "alpha.metal").read_text().replace("alpha.metal", "fillerFraction"))
+    case.set("system/controlDict", "endTime", "1e-3")
+    case.run("ldnaFoam")
+    table = case.latest_table("metalGasMixture", name)
+    data = LITERATURE[name]
+
+    def at(column: str, T: float) -> float:
+        row = np.nonzero(np.isclose(table["T"], T))[0]
+        assert len(row) == 1, f"no table row at {T} K"
+        return float(table[column][row[0]])
+
+    for T in SOLID_TEMPERATURES:
+        expected = {
+            "Cp": polynomial(data["cp_solid"], T),
+            "rhoSolid": polynomial(data["rho_solid"], T),
+            "kappa": conductivity(data["k_solid"], T),
+            "liquidFraction": 0.0,
+            "enthalpy": cp_integral(data["cp_solid"], ENTHALPY_REFERENCE, T),
+        }
+        for column, value in expected.items():
+            print(f"{name} {T:.0f} K {column}: table {at(column, T):.6g}, literature {value:.6g}")
+            assert at(column, T) == pytest.approx(value, rel=DIGITS, abs=1e-9)
+    for T in LIQUID_TEMPERATURES:
+        expected = {
+            "Cp": polynomial(data["cp_liquid"], T),
+            "rhoLiquid": polynomial(data["rho_liquid"], T),
+            "kappa": conductivity(data["k_liquid"], T),
+            "liquidFraction": 1.0,
+        }
+        for column, value in expected.items():
+            print(f"{name} {T:.0f} K {column}: table {at(column, T):.6g}, literature {value:.6g}")
+            assert at(column, T) == pytest.approx(value, rel=DIGITS)
+    low, high = LIQUID_TEMPERATURES[0], LIQUID_TEMPERATURES[-1]
+    rise = at("enthalpy", high) - at("enthalpy", low)
+    assert rise == pytest.approx(cp_integral(data["cp_liquid"], low, high), rel=DIGITS)
+    # Solidus to liquidus: the latent heat, plus a heat capacity between the
+    # solid's at the solidus and the liquid's over the melting range
+    solid = cp_integral(data["cp_solid"], ENTHALPY_REFERENCE, data["solidus"])
+    melt = (at("enthalpy", low) - cp_integral(data["cp_liquid"], data["liquidus"], low)
+            - solid - data["latent"])
+    span = data["liquidus"] - data["solidus"]
+    bounds = sorted((polynomial(data["cp_solid"], data["solidus"]) * span,
+                     polynomial(data["cp_liquid"], data["liquidus"]) * span))
+    print(f"{name}: sensible heat across the melting range {melt:.1f} J/kg, bounds {bounds}")
+    assert bounds[0] * (1 - DIGITS) - 1 <= melt <= bounds[1] * (1 + DIGITS) + 1

@@ -22,6 +22,7 @@ from pathlib import Path
 
 from .case import Case
 from .foamcase import read_table
+from .post import POST_FUNCTION
 
 #: Fields a start maps (the solver computes the rest from them)
 STATE_FIELDS = ("alpha.metal", "T", "U", "p", "p_rgh", "fillerFraction")
@@ -81,10 +82,11 @@ def save_state(run: Path, target: Path, time: str | None = None,
         if (directory / field).is_file():
             _gzip(directory / field, target / directory.name / field)
     # The dictionaries: a run whose own are the same continues this weld
+    # (not the one ldna post writes to run its function object)
     for folder in ("system", "constant"):
         (target / folder).mkdir(parents=True, exist_ok=True)
         for file in (run / folder).iterdir():
-            if file.is_file():
+            if file.is_file() and file.name != POST_FUNCTION:
                 shutil.copy(file, target / folder / file.name)
     end = float(directory.name)
     for name, file in HISTORY_TABLES:

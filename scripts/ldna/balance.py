@@ -136,9 +136,16 @@ def patch_flows(case: Case | Path, start: float = -np.inf, end: float = np.inf) 
     function objects (``metalFlowIn``, ...; negative: entered) between
     ``start`` and ``end`` [s]."""
     case = Case(case)
-    run_start = float(case.balances()["time"][0])
+    balance_times = case.balances()["time"]
     volumes = {}
     for name in FLOW_FUNCTION_OBJECTS:
+        rows = case.function_object(name, "surfaceFieldValue.dat")
+        if rows.size == 0:
+            continue
+        # The step before the table's first: the run's start (the balances
+        # of a continued weld hold the saved weld's rows before it)
+        before = balance_times[balance_times < rows[0, 0]]
+        run_start = float(before[-1]) if before.size else float(balance_times[0])
         times, volume = step_flows(case, name, run_start)
         if times.size:
             volumes[name] = float(volume[(times > start) & (times <= end)].sum())

@@ -15,8 +15,10 @@ case's last time (``ldna post``: metrics and pictures), and writes
   plus ``end_time_s``, ``cells``, ``n_procs``, ``core_hours`` (and per
   simulated second), the mean areas over the last two windows, ``steady``
   (bool) and ``steadiness`` (every metric's window means, change and
-  tolerance), the area's range over the last window and the mass balance error
-  of the mean; and, as a check that needs no surface height, the net metal
+  tolerance), the area's range over the last window, the mean over the
+  judged windows together (``judged_mean_bead_area_mm2``, from
+  ``judged_from_s``) and its mass balance error (and the last window's);
+  and, as a check that needs no surface height, the net metal
   area the process added to the section at the last time (all metal in the
   plane minus the substrate's section) and its error;
 - ``bead_area.png``: the section's bead area against time, its window means
@@ -69,9 +71,19 @@ def core_hours(case: Path, master_cpu_seconds: float | None = None) -> float:
     return seconds * ranks(case) / 3600
 
 
+def judged_mean(times: np.ndarray, areas: np.ndarray, start: float) -> float:
+    """Time-weighted mean of the bead area from ``start`` to the last row."""
+    inside = times >= start
+    if inside.sum() < 2:
+        return float(areas[-1])
+    t, a = times[inside], areas[inside]
+    return float(np.trapezoid(a, t) / (t[-1] - t[0]))
+
+
 def plot_history(times: np.ndarray, areas: np.ndarray, expected: float, means: dict,
                  path: Path) -> Path:
-    """The section's bead area against time, its window means and the mass balance's area."""
+    """The section's bead area against time, its window means, the mean over
+    the judged windows and the mass balance's area."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -87,9 +99,11 @@ def plot_history(times: np.ndarray, areas: np.ndarray, expected: float, means: d
         axes.axvspan(start, start + means["window"], color=shade)
         axes.hlines(1e6 * mean, start, start + means["window"], color="C1",
                     label="mean over the window" if k == 0 else None)
+    axes.hlines(1e6 * means["judged"], means["judged_start"], end, color="C2", linestyle=":",
+                label=f"mean over the judged windows {1e6 * means['judged']:.1f} mm$^2$")
     axes.set_xlabel("time [s]")
     axes.set_ylabel("bead area [mm$^2$]")
-    axes.legend(loc="lower right")
+    axes.legend(loc="upper left", fontsize="small")
     axes.grid(True, alpha=0.3)
     figure.tight_layout()
     figure.savefig(path, dpi=120)
@@ -129,8 +143,10 @@ def metal_budget(case: Path, start: float, end: float, expected_area: float,
     evaporates; and the metal that left through the atmosphere over the
     whole run [mm3]."""
     speed = post.welding_speed(case)
-    duration = end - start
     window = patch_flows(case, start, end)
+    # The flows of this run only (a continued weld's saved tables have none)
+    flow_rows = Case(case).function_object("metalFlowAtmosphere", "surfaceFieldValue.dat")
+    duration = end - (max(start, float(flow_rows[0, 0])) if flow_rows.size else start)
     evaporation = evaporation_table(case)
     evaporated = 0.0
     if evaporation is not None:
@@ -165,8 +181,14 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
     times, areas = bead_area_history(case, section)
     verdict = steady.case_steadiness(case, section)
     area = verdict.metrics["bead_area"]
-    means = {"window": verdict.window, "mean": area.mean, "previous_mean": area.previous_mean}
     end = float(times[-1])
+    # The mass balance holds for the mean over whole ripples: the judged
+    # windows together, not the last one alone (a window may be shorter
+    # than the ripple when its period is read from few crossings)
+    judged_start = end - steady.WINDOWS * verdict.window
+    means = {"window": verdict.window, "mean": area.mean, "previous_mean": area.previous_mean,
+             "judged_start": judged_start,
+             "judged": judged_mean(times, areas, judged_start)}
     figures.update({
         "section_function_object": section,
         "end_time_s": float(times[-1]),
@@ -185,10 +207,13 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         "mean_change": area.change / area.mean if area.mean > 0 else float("inf"),
         "bead_area_min_mm2": 1e6 * area.low,
         "bead_area_max_mm2": 1e6 * area.high,
-        "mass_balance_error": 1e6 * area.mean / figures["expected_bead_area_mm2"] - 1,
+        "judged_from_s": judged_start,
+        "judged_mean_bead_area_mm2": 1e6 * means["judged"],
+        "mass_balance_error": 1e6 * means["judged"] / figures["expected_bead_area_mm2"] - 1,
+        "last_window_mass_balance_error": 1e6 * area.mean / figures["expected_bead_area_mm2"] - 1,
     })
-    figures.update(metal_budget(case, end - means["window"], end,
-                                1e-6 * figures["expected_bead_area_mm2"], means["mean"]))
+    figures.update(metal_budget(case, judged_start, end,
+                                1e-6 * figures["expected_bead_area_mm2"], means["judged"]))
     net = section_metal_area(case, 1e-3 * figures["bead_section_mm"]) - substrate_section(case)
     figures["net_deposit_area_mm2"] = 1e6 * net
     figures["net_mass_balance_error"] = (figures["net_deposit_area_mm2"]

@@ -173,27 +173,23 @@ def test_metal_properties_are_the_literature_data(energy_box_case: Case, name: s
         assert len(row) == 1, f"no table row at {T} K"
         return float(table[column][row[0]])
 
-    for T in SOLID_TEMPERATURES:
-        expected = {
-            "Cp": polynomial(data["cp_solid"], T),
-            "rhoSolid": polynomial(data["rho_solid"], T),
-            "kappa": conductivity(data["k_solid"], T),
-            "liquidFraction": 0.0,
-            "enthalpy": cp_integral(data["cp_solid"], ENTHALPY_REFERENCE, T),
+    def literature(T: float, phase: str) -> dict[str, float]:
+        values = {
+            "Cp": polynomial(data[f"cp_{phase}"], T),
+            f"rho{phase.capitalize()}": polynomial(data[f"rho_{phase}"], T),
+            "kappa": conductivity(data[f"k_{phase}"], T),
+            "liquidFraction": 0.0 if phase == "solid" else 1.0,
         }
-        for column, value in expected.items():
-            print(f"{name} {T:.0f} K {column}: table {at(column, T):.6g}, literature {value:.6g}")
-            assert at(column, T) == pytest.approx(value, rel=DIGITS, abs=1e-9)
-    for T in LIQUID_TEMPERATURES:
-        expected = {
-            "Cp": polynomial(data["cp_liquid"], T),
-            "rhoLiquid": polynomial(data["rho_liquid"], T),
-            "kappa": conductivity(data["k_liquid"], T),
-            "liquidFraction": 1.0,
-        }
-        for column, value in expected.items():
-            print(f"{name} {T:.0f} K {column}: table {at(column, T):.6g}, literature {value:.6g}")
-            assert at(column, T) == pytest.approx(value, rel=DIGITS)
+        if phase == "solid":
+            values["enthalpy"] = cp_integral(data["cp_solid"], ENTHALPY_REFERENCE, T)
+        return values
+
+    for phase, temperatures in (("solid", SOLID_TEMPERATURES), ("liquid", LIQUID_TEMPERATURES)):
+        for T in temperatures:
+            for column, value in literature(T, phase).items():
+                print(f"{name} {T:.0f} K {column}: table {at(column, T):.6g}, "
+                      f"literature {value:.6g}")
+                assert at(column, T) == pytest.approx(value, rel=DIGITS, abs=1e-9)
     low, high = LIQUID_TEMPERATURES[0], LIQUID_TEMPERATURES[-1]
     rise = at("enthalpy", high) - at("enthalpy", low)
     assert rise == pytest.approx(cp_integral(data["cp_liquid"], low, high), rel=DIGITS)

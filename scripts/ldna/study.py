@@ -101,6 +101,8 @@ class Member:
     error: str = ""
     wall_time: float = 0.0
     metrics: dict[str, float] = field(default_factory=dict)
+    #: The solver's last time [s] (the metrics' row may be a few steps before)
+    end_time: float | None = None
     #: Kept from an earlier run of the study (--resume)
     resumed: bool = False
     #: What ``ldna post --json`` reports at the member's last time, and
@@ -255,6 +257,7 @@ def finish_member(member: Member, returncode: int, wall_time: float) -> None:
         member.error = failure_line(log_text or (member.path / "log.Allrun").read_text(
             errors="replace"))
     if member.status == "done":
+        member.end_time = float(Case(member.path).balances()["time"][-1])
         row = read_function_object_metrics(member.path)[-1]
         member.metrics = {"time": float(row[0]),
                           **dict(zip(BeadMetrics.FUNCTION_OBJECT_COLUMNS, map(float, row[1:])))}
@@ -398,7 +401,7 @@ def write_json(members: list[Member], path: Path) -> Path:
                 for key, value in member.post.items()}
         runs.append({"member": member.name, **member.values,
                      **process_parameters(member.path), "status": member.status,
-                     "error": member.error, "end_time_s": member.metrics.get("time"),
+                     "error": member.error, "end_time_s": member.end_time,
                      "wall_time_s": member.wall_time, "steady": member.steady,
                      "window_means": member.window_means, **post})
     path.write_text(json.dumps({"runs": runs}, indent=2) + "\n", encoding="utf-8")

@@ -22,6 +22,7 @@ runs into; with that mass counted (TEqn.H) they agree to 1.4e-6.
 """
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -43,23 +44,29 @@ FIELD_TOLERANCE = 1e-5
 
 
 def tighten_solvers(case: Case) -> None:
-    """Converge every linear solver of the case to SOLVER_TOLERANCE."""
-    fv_solution = "system/fvSolution"
-    case.run(f"foamDictionary -entry solvers/p_rgh/relTol -set 0 {fv_solution}",
-             log_name="foamDictionary.relTol")
-    for solver in ("p_rgh", '"(U|T)"', '"alpha.metal.*"'):
-        case.run(f"foamDictionary -entry 'solvers/{solver}/tolerance' -set {SOLVER_TOLERANCE} "
-                 f"{fv_solution}", log_name="foamDictionary.tolerance")
+    """Converge every linear solver of the case to SOLVER_TOLERANCE, the
+    final corrector's (p_rghFinal, (U|T)Final) too, with no relative
+    tolerance."""
+    fv_solution = case / "system" / "fvSolution"
+    solvers, rest = fv_solution.read_text().split("PIMPLE", 1)
+    solvers = re.sub(r"(\n\s*)tolerance\s+[^;]+;", rf"\1tolerance {SOLVER_TOLERANCE};", solvers)
+    solvers = re.sub(r"(\n\s*)relTol\s+[^;]+;", r"\1relTol 0;", solvers)
+    fv_solution.write_text(solvers + "PIMPLE" + rest)
 
 
 #: Effects of the template compared, besides the droplets
 EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosity"]
 
 
-#: Measured, not yet understood: strict, so that a fix shows
+#: Measured (2026-11-27), the cause not yet removed: strict, so that a fix
+#: shows.  The insertion is rank-independent (metal fractions within 3e-11
+#: after it, the droplets' masses equal to all digits); in the first steps
+#: of flight the difference grows about a thousandfold a step (Courant
+#: number 1.6e-9, 3.7e-7, 4.5e-4 apart) to 1.9e-3 at 10.5 ms and 6.9e-3 at
+#: 11.5 ms with every solver at 1e-13
 DROPLETS_DIFFER = (
-    "with inserted droplets the serial and parallel runs differ by up to 3.4e-2 in a "
-    "cell's metal fraction at 15 ms (the droplets in flight); 1e-10 without droplets")
+    "with inserted droplets the serial and parallel runs differ by some 1e-3 to 1e-2 in a "
+    "cell's metal fraction at 10.5-15 ms (the droplets in flight); 1e-10 without droplets")
 
 
 @pytest.mark.parametrize("with_droplets", [

@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ldna.balance import WIRE_COLUMNS, wire_table
 from ldna.case import Case
 from ldna.foamdict import keep_blocks
 
@@ -58,21 +59,27 @@ def tighten_solvers(case: Case) -> None:
 EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosity"]
 
 
-#: Measured (2026-11-27), the cause not yet removed: strict, so that a fix
-#: shows.  The insertion is rank-independent (metal fractions within 3e-11
+#: Measured (2026-11-27), the cause not yet removed.  The insertion is rank-independent (metal fractions within 3e-11
 #: after it, the droplets' masses equal to all digits); in the first steps
 #: of flight the difference grows about a thousandfold a step (Courant
 #: number 1.6e-9, 3.7e-7, 4.5e-4 apart) to 1.9e-3 at 10.5 ms and 6.9e-3 at
-#: 11.5 ms with every solver at 1e-13
+#: 11.5 ms and 3.5e-2 at 15 ms with every solver at 1e-13
 DROPLETS_DIFFER = (
-    "with inserted droplets the serial and parallel runs differ by some 1e-3 to 1e-2 in a "
+    "with inserted droplets the serial and parallel runs differ by 1.9e-3 to 3.5e-2 in a "
     "cell's metal fraction at 10.5-15 ms (the droplets in flight); 1e-10 without droplets")
+
+
+#: With droplets, what must hold meanwhile: the metal and the droplets'
+#: masses agree to round-off (the insertion does not depend on the ranks),
+#: and no cell differs by as much as half of it in metal (a droplet lost,
+#: doubled or put a cell away moves whole cells of metal)
+MASS_AGREEMENT = 1e-9
+DROPLET_DISPLACEMENT = 0.5
 
 
 @pytest.mark.parametrize("with_droplets", [
     pytest.param(False, id="without_droplets"),
-    pytest.param(True, id="with_droplets",
-                 marks=pytest.mark.xfail(strict=True, reason=DROPLETS_DIFFER)),
+    pytest.param(True, id="with_droplets"),
 ])
 def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
                                         with_droplets: bool) -> None:
@@ -97,6 +104,14 @@ def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
     alpha_serial = serial.field("alpha.metal", end_serial)
     alpha_parallel = parallel.field("alpha.metal", end_parallel)
     metal = (alpha_serial >= 0.5) & (alpha_parallel >= 0.5)
+    masses = [case.balances()["metal_mass"][-1] for case in (serial, parallel)]
+    print(f"metal mass {masses[0]:.14g} serial, {masses[1]:.14g} parallel")
+    assert masses[1] == pytest.approx(masses[0], rel=MASS_AGREEMENT)
+    if with_droplets:
+        added = [sum(values[-1, WIRE_COLUMNS.index("addedMass")]
+                     for values in wire_table(case).values()) for case in (serial, parallel)]
+        assert added[0] > 0 and added[1] == pytest.approx(added[0], rel=MASS_AGREEMENT)
+        assert np.abs(alpha_serial - alpha_parallel).max() < DROPLET_DISPLACEMENT
     for field, where in (("alpha.metal", slice(None)), ("p_rgh", slice(None)),
                          ("T", metal), ("U", metal)):
         a = serial.field(field, end_serial)[where]
@@ -104,6 +119,8 @@ def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
         scale = np.abs(a).max()
         difference = np.abs(a - b).max() / scale
         print(f"{field}: largest difference {difference:.2e} of its scale {scale:.6g}")
+        if with_droplets and difference >= FIELD_TOLERANCE:
+            pytest.xfail(DROPLETS_DIFFER)
         assert difference < FIELD_TOLERANCE
     # The scene is not trivial: the laser has heated the metal
     assert serial.field("T", end_serial).max() > HEATED

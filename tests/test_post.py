@@ -295,7 +295,11 @@ def test_wetting_angle_of_flat_and_square_deposits() -> None:
 def test_a_run_shorter_than_the_bead_travel_says_so() -> None:
     section = 20.1e-3
     early = bead_not_yet_there(arrival=1.48, time=0.5, section=section)
-    assert early is not None and "20.10 mm" in early and "1.5 s" in early
-    assert "--end-time 2" in early
+    assert early is not None and "20.10 mm" in early and "t = 1.48 s" in early
+    assert "--end-time 2" in early and "of the substrate" in early
     assert bead_not_yet_there(arrival=1.48, time=1.48, section=section) is None
     assert bead_not_yet_there(arrival=None, time=0.5, section=section) is None
+    # Started at 10 s from another weld: the section holds that weld's bead
+    changed = bead_not_yet_there(arrival=11.48, time=10.5, section=section, weld_start=10.0)
+    assert changed is not None and "started from at t = 10 s" in changed
+    assert "--end-time 12" in changed

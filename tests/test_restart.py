@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from ldna.balance import metal_mass_balance
+from ldna import post
 from ldna.case import Case
 
 #: Where the interrupted run stops, and where both runs end [s]
@@ -159,3 +160,14 @@ def test_a_saved_state_continues_its_weld(ldna_case: Case, tmp_path: Path) -> No
         assert float(row["metal_mass"]) == pytest.approx(float(match["metal_mass"][0]), rel=1e-8)
     assert float(other.balances()["time"][0]) == float(STOP_TIME), \
         "a case with other knobs got the state's history"
+    # The other weld starts at the state's time: its bead reaches a section
+    # that long after the continued weld's (which started at 0)
+    section = 0.02
+    assert post.weld_start_time(same.path) == 0.0
+    assert post.weld_start_time(other.path) == float(STOP_TIME)
+    delay = post.bead_arrival_time(other, section) - post.bead_arrival_time(same, section)
+    assert delay == pytest.approx(float(STOP_TIME), rel=1e-12)
+    # ... and a state saved from it remembers when that weld started
+    other_state = tmp_path / "other-state"
+    other.run(f"{LDNA} save-state {other.path} {other_state}", log_name="saveState")
+    assert list(other_state.glob("history/weldStart/*/start.dat.gz"))

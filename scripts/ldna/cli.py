@@ -198,7 +198,8 @@ def _post(args: argparse.Namespace) -> int:
         return 0
     print(post.format_metrics(result))
     note = post.bead_not_yet_there(post.bead_arrival_time(case, result.bead_section), time,
-                                   result.bead_section, post.started_from_estimate(case))
+                                   result.bead_section, post.started_from_estimate(case),
+                                   post.weld_start_time(case))
     if note:
         print(textwrap.fill(note, width=79))
     for picture in pictures:

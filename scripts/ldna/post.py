@@ -336,7 +336,24 @@ def _bead_arrival_time(case: Case, section: float) -> float:
     wires = re.findall(r"^\s*(\w+)\s*$", case.value(source, "wireDroplets/wires"), re.M)
     spacing = case.scalar(source, "wireDroplets/wireSpacing")
     midpoint = first_wire_x + 0.5 * (len(wires) - 1) * spacing
-    return (section - midpoint) / welding_speed(case)
+    return weld_start_time(case.path) + (section - midpoint) / welding_speed(case)
+
+
+#: The record of ``Allrun -start-from`` that the case's weld started at T
+#: from another weld's state (other parameters or mesh):
+#: postProcessing/<name>/<T>/<file>.dat (bin/tools/RunFunctions)
+WELD_START_RECORD = ("weldStart", "start")
+
+
+def weld_start_time(case: Path) -> float:
+    """When the case's own weld started [s]: 0, or the time at which it
+    started from another weld's state, whose bead the sections hold until
+    the case's own arrives (the latest such start)."""
+    name, file = WELD_START_RECORD
+    starts = [float(line) for record in (Path(case) / "postProcessing" / name).glob(f"*/{file}.dat")
+              for line in record.read_text().splitlines()
+              if line.strip() and not line.startswith("#")]
+    return max(starts, default=0.0)
 
 
 #: The record of ``ldna steady-start`` that a case's time-0 fields are its
@@ -351,18 +368,22 @@ def started_from_estimate(case: Case | Path) -> bool:
 
 
 def bead_not_yet_there(arrival: float | None, time: float, section: float,
-                       estimate: bool = False) -> str | None:
+                       estimate: bool = False, weld_start: float = 0.0) -> str | None:
     """What to tell a user whose run ended before the bead reached its section, else None.
 
     ``estimate``: the run started from ``ldna steady-start``'s estimate, whose
-    deposit the section holds until the computed one arrives.
+    deposit the section holds until the computed one arrives; ``weld_start``
+    (> 0): the run started then from another weld's state, whose bead the
+    section holds until this weld's arrives.
     """
     if arrival is None or time >= arrival:
         return None
-    holds = ("the estimate of the start (ldna steady-start), not a computed bead"
+    holds = (f"the weld this run started from at t = {weld_start:.4g} s, not of its own"
+             if weld_start > 0 else
+             "the estimate of the start (ldna steady-start), not a computed bead"
              if estimate else "the substrate")
     return (f"The bead has not reached the section x = {1e3 * section:.2f} mm yet: its start "
-            f"arrives there after about {arrival:.2g} s of welding and this run ends at "
+            f"arrives there at about t = {arrival:.3g} s and this run ends at "
             f"{time:.3g} s.  The section metrics above are of {holds}; for the bead run "
             f"longer (bin/ldna-scene --end-time {max(2.0, round(arrival + 1.0)):g}, or endTime "
             "in system/controlDict).")

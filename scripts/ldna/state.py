@@ -22,7 +22,7 @@ from pathlib import Path
 
 from .case import Case
 from .foamcase import read_table
-from .post import POST_FUNCTION
+from .post import POST_FUNCTION, WELD_START_RECORD
 
 #: Fields a start maps (the solver computes the rest from them)
 STATE_FIELDS = ("alpha.metal", "T", "U", "p", "p_rgh", "fillerFraction")
@@ -102,6 +102,10 @@ def save_state(run: Path, target: Path, time: str | None = None,
         path.parent.mkdir(parents=True)
         with gzip.open(path.with_name(path.name + ".gz"), "wt", encoding="utf-8") as out:
             out.write(text)
+    # When this weld started from another's state, however long ago
+    name, file = WELD_START_RECORD
+    for record in (run / "postProcessing" / name).glob(f"*/{file}.dat"):
+        _gzip(record, target / HISTORY / record.relative_to(run / "postProcessing"))
     return target
 
 

@@ -161,7 +161,7 @@ class BeadScene(LdnaScene):
         return meshing.process_cell_size(level)
 
     def run(self, case: Case, member: "Member") -> None:
-        from . import steady
+        from . import post, steady
 
         control = "system/controlDict"
         # Every stretch's end is written, so that a stopped study resumes
@@ -170,8 +170,13 @@ class BeadScene(LdnaScene):
         written = [float(t.name) for t in case.times]
         if (case / "processor0").is_dir():
             written += [float(t.name) for t in Case(case / "processor0").times]
-        # The first judgeable time, or where a resumed member stopped
-        target = max(start + steady.WINDOWS * steady.MIN_WINDOW, *written)
+        # The first judgeable time: four windows after the level's own bead
+        # reaches the section (a level mapped from another mesh holds the
+        # start's bead until then), or where a resumed member stopped
+        section = post.configured_bead_section(case.path)
+        arrival = None if section is None else post.bead_arrival_time(case, section)
+        first = start if arrival is None else max(start, arrival)
+        target = max(first + steady.WINDOWS * steady.MIN_WINDOW, *written)
         stop = member.end_time
         target = min(self.STRETCH * math.ceil(target / self.STRETCH - 1e-9), stop)
         while True:

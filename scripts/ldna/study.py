@@ -54,7 +54,7 @@ import numpy as np
 from .case import Case
 from .foamcase import BALANCES, ENV_SCRIPT, time_directories
 from .post import BeadMetrics, post_process, read_function_object_metrics, summary
-from .steady import case_steadiness
+from .steady import DomainBalance, case_steadiness, case_table, first_steady
 
 #: Dictionary of the template's knobs, for parameters without a file
 CASE_PARAMETERS = "system/caseParameters"
@@ -111,6 +111,8 @@ class Member:
     steady: bool | None = None
     #: The last judged windows' means of the section's metrics [SI]
     window_means: dict[str, float] = field(default_factory=dict)
+    #: The first time ``ldna steady`` judged the member quasi-steady [s]
+    first_steady: float | None = None
 
 
 def latest_time(case: Path) -> float:
@@ -305,6 +307,9 @@ def collect_post(member: Member) -> None:
         verdict = case_steadiness(member.path)
         member.steady = verdict.steady
         member.window_means = {name: m.mean for name, m in verdict.metrics.items()}
+        times, table, arrival = case_table(member.path)
+        member.first_steady = first_steady(times, table, arrival,
+                                           balance=DomainBalance.of(member.path))
     except (ValueError, IndexError):
         member.steady = False
 
@@ -403,6 +408,7 @@ def write_json(members: list[Member], path: Path) -> Path:
                      **process_parameters(member.path), "status": member.status,
                      "error": member.error, "end_time_s": member.end_time,
                      "wall_time_s": member.wall_time, "steady": member.steady,
+                     "first_steady_s": member.first_steady,
                      "window_means": member.window_means, **post})
     path.write_text(json.dumps({"runs": runs}, indent=2) + "\n", encoding="utf-8")
     return path

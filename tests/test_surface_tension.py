@@ -24,6 +24,9 @@ SURFACE_VELOCITY_TOLERANCE = 0.05
 #: the limit (the gas's density moves it by < 3e-4)
 CAPILLARY_STEPS = 20
 CAPILLARY_LIMIT_TOLERANCE = 1e-3
+#: Write interval of the landing check, in capillary limits: round() of it
+#: is one step, ceil() two
+WRITE_INTERVAL_IN_LIMITS = 1.4
 #: The undriven layer: the time it runs [s]
 REST_END_TIME = 0.05
 
@@ -121,6 +124,30 @@ def test_capillary_time_step_limit(static_droplet_case: Case) -> None:
     steps = time_steps(case, CAPILLARY_STEPS * expected)
     print(f"steps {steps[-3:]} s, capillary limit {expected:.6e} s")
     assert abs(steps[-1] / expected - 1) < CAPILLARY_LIMIT_TOLERANCE
+
+
+def test_landing_on_write_times_keeps_the_capillary_limit(static_droplet_case: Case) -> None:
+    """Writes every 1.4 capillary limits (adjustableRunTime): OpenFOAM v1912
+    lands on a write time in round(1.4) = 1 step of 1.4 limits; the solver
+    must take two shorter ones instead, and still write at every multiple
+    of the interval."""
+    case = static_droplet_case
+    _, _, h = cell_centres_2d(case)
+    limit = capillary_limit(case, h)
+    # Three digits, so that the time folders' names (six) are exact
+    interval = float(f"{WRITE_INTERVAL_IN_LIMITS * limit:.3g}")
+    writes = 10
+    case.set("system/controlDict", "endTime", f"{writes * interval:.12g}")
+    case.set("system/controlDict", "writeControl", "adjustableRunTime")
+    case.set("system/controlDict", "writeInterval", f"{interval:.12g}")
+    case.run("ldnaFoam")
+    times = np.concatenate([[0.0], case.balances()["time"]])
+    steps = np.diff(np.unique(times))
+    print(f"capillary limit {limit:.6e} s, write interval {interval:.6e} s, "
+          f"longest step {steps.max():.6e} s over {len(steps)} steps")
+    assert steps.max() <= limit * (1 + CAPILLARY_LIMIT_TOLERANCE)
+    written = np.array([float(t.name) for t in case.times if float(t.name) > 0])
+    np.testing.assert_allclose(written, interval * np.arange(1, writes + 1), rtol=1e-12)
 
 
 def test_solid_surface_does_not_limit_the_step(static_droplet_case: Case) -> None:

@@ -67,6 +67,7 @@ def test_study_of_a_three_by_one_grid(tmp_path: Path) -> None:
     assert peak[1] > peak[0], "hotter droplets make hotter metal"
     # The finished members' sections side by side, on one temperature scale
     assert (study_dir / "sections.png").stat().st_size > 0
+    assert (study_dir / "bead-sections.png").stat().st_size > 0
 
 
 #: The resumed study: the first leg's end and the raised end time [s]

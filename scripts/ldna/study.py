@@ -352,14 +352,15 @@ def _laser_target(case: Path) -> float | None:
         return None
 
 
-def write_sections(members: list[Member], path: Path) -> Path | None:
+def write_sections(members: list[Member], path: Path, at_bead: bool = False) -> Path | None:
     """The finished members' transverse sections side by side (fusion line,
     free surface, temperature) through the laser's target (the wires'
     midpoint plus the laser's offset: where the pool forms and the laser
-    acts, so a member's own process shows within its run; the bead section
-    behind the pool holds metal laid seconds before), drawn again on one
-    temperature scale: from the lowest ambient to the hottest member's peak
-    metal temperature."""
+    acts, so a member's own process shows within its run), or with
+    ``at_bead`` through the bead section (where the bead has solidified; it
+    holds a member's own bead once that has travelled there), drawn again on
+    one temperature scale: from the lowest ambient to the hottest member's
+    peak metal temperature."""
     done = [m for m in members if m.status == "done" and m.post]
     if not done:
         return None
@@ -380,17 +381,24 @@ def write_sections(members: list[Member], path: Path) -> Path | None:
     for axis in axes.flat:
         axis.axis("off")
     for axis, member in zip(axes.flat, done):
-        _, pictures, _ = post_process(member.path, member.path / "pictures" / "laser-target",
-                                      bead_section=_laser_target(member.path),
-                                      temperature_range=(low, high))
+        where = (member.post["bead_section_mm"] * 1e-3 if at_bead
+                 else _laser_target(member.path))
+        _, pictures, _ = post_process(member.path, member.path / "pictures" /
+                                      ("bead-section" if at_bead else "laser-target"),
+                                      bead_section=where, temperature_range=(low, high))
         transverse = next(p for p in pictures if p.name == "transverse.png")
         axis.imshow(_cropped(plt.imread(transverse)))
+        figures = (f"bead {member.post['bead_width_mm']:.1f} x "
+                   f"{member.post['bead_height_mm']:.2f} mm, wetting angle "
+                   f"{member.post['wetting_angle_deg']:.0f} deg" if at_bead else
+                   f"pool {member.post['pool_length_mm']:.1f} x "
+                   f"{member.post['pool_width_mm']:.1f} mm, substrate surface at most "
+                   f"{member.post['peak_surface_temperature_K']:.0f} K")
         axis.set_title(" ".join(f"{k}={v}" for k, v in member.values.items())
-                       + f"\npool {member.post['pool_length_mm']:.1f} x "
-                       f"{member.post['pool_width_mm']:.1f} mm, substrate surface at most "
-                       f"{member.post['peak_surface_temperature_K']:.0f} K, bonded "
-                       f"{member.post['bonded_width_mm']:.1f} mm", fontsize=10)
-    figure.suptitle(f"Through the laser's target at each member's last time; T {low:g}-"
+                       + f"\n{figures}, bonded {member.post['bonded_width_mm']:.1f} mm",
+                       fontsize=10)
+    where_name = "bead section" if at_bead else "laser's target"
+    figure.suptitle(f"Through the {where_name} at each member's last time; T {low:g}-"
                     f"{high:.0f} K in all", fontsize=11)
     figure.tight_layout()
     figure.savefig(path, dpi=110)
@@ -461,4 +469,5 @@ def run_study(template: Path, study_dir: Path, parameters: list[Parameter],
     sys.stderr.write("\n")
     write_json(members, Path(study_dir) / "results.json")
     write_sections(members, Path(study_dir) / "sections.png")
+    write_sections(members, Path(study_dir) / "bead-sections.png", at_bead=True)
     return members, write_csv(members, Path(study_dir) / "results.csv")

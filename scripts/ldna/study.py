@@ -54,7 +54,7 @@ import numpy as np
 from .case import Case
 from .foamcase import BALANCES, ENV_SCRIPT, time_directories
 from .post import BeadMetrics, post_process, read_function_object_metrics, summary
-from .steady import DomainBalance, case_steadiness, case_table, first_steady
+from .steady import DomainBalance, case_table, first_steady, judge
 
 #: Dictionary of the template's knobs, for parameters without a file
 CASE_PARAMETERS = "system/caseParameters"
@@ -304,12 +304,13 @@ def collect_post(member: Member) -> None:
     result, _, time_read = post_process(member.path)
     member.post = summary(member.path, result, time_read)
     try:
-        verdict = case_steadiness(member.path)
+        # The tables read once for the verdict and the first steady time
+        times, table, arrival = case_table(member.path)
+        balance = DomainBalance.of(member.path)
+        verdict = judge(times, table, arrival, balance=balance)
         member.steady = verdict.steady
         member.window_means = {name: m.mean for name, m in verdict.metrics.items()}
-        times, table, arrival = case_table(member.path)
-        member.first_steady = first_steady(times, table, arrival,
-                                           balance=DomainBalance.of(member.path))
+        member.first_steady = first_steady(times, table, arrival, balance=balance)
     except (ValueError, IndexError):
         member.steady = False
 

@@ -140,6 +140,9 @@ def test_landing_on_write_times_keeps_the_capillary_limit(static_droplet_case: C
     case.set("system/controlDict", "endTime", f"{writes * interval:.12g}")
     case.set("system/controlDict", "writeControl", "adjustableRunTime")
     case.set("system/controlDict", "writeInterval", f"{interval:.12g}")
+    # From the first step at the limit: grown to it by 1.2 a step, the step
+    # would stay below the 1.4/1.5 limits at which round() takes one step
+    case.set("system/controlDict", "deltaT", f"{limit:.12g}")
     case.run("ldnaFoam")
     times = np.concatenate([[0.0], case.balances()["time"]])
     steps = np.diff(np.unique(times))

@@ -4,8 +4,8 @@ The LDNA template on a coarse mesh (600 cells, Gaussian droplets, which need
 no resolved droplet) runs one time step per variant.  For every numeric entry
 (numbers, Function1s, vectors) of the effects in constant/fvOptions, of
 constant/thermophysicalProperties, of the PIMPLE controls in
-system/fvSolution and of meltPoolMetrics in system/controlDict the variants
-are the values nan, inf, -1, 0 and 1e300,
+system/fvSolution and of meltPoolMetrics and upstreamTotals in
+system/controlDict the variants are the values nan, inf, -1, 0 and 1e300,
 the entry removed, its key misspelt and a word where the number goes.  Each
 run must end in one of two ways:
 
@@ -46,7 +46,7 @@ SCOPES: dict[str, list[str] | None] = {
                            "surfaceLosses", "enthalpyPorosity"],
     "constant/thermophysicalProperties": None,
     "system/fvSolution": ["PIMPLE"],
-    "system/controlDict": ["functions/meltPoolMetrics"],
+    "system/controlDict": ["functions/meltPoolMetrics", "functions/upstreamTotals"],
 }
 FILES = list(SCOPES)
 #: The bad values of every numeric entry

@@ -13,7 +13,9 @@ object wrote during the run.
 from __future__ import annotations
 
 import math
+import os
 import shutil
+import time
 from pathlib import Path
 
 import numpy as np
@@ -303,3 +305,26 @@ def test_a_run_shorter_than_the_bead_travel_says_so() -> None:
     changed = bead_not_yet_there(arrival=11.48, time=10.5, section=section, weld_start=10.0)
     assert changed is not None and "started from at t = 10 s" in changed
     assert "--end-time 12" in changed
+
+
+@pytest.mark.unit
+def test_a_run_restarted_from_the_same_time_replaces_the_earlier_rows(tmp_path: Path) -> None:
+    """OpenFOAM's writeFile names the table of a second run from the same
+    start time meltPoolMetrics_<time>.dat: the metrics are that run's, not
+    the first file's (a killed run resumed from its last written time)."""
+    from ldna.post import read_function_object_metrics
+
+    folder = tmp_path / "postProcessing" / "meltPoolMetrics" / "12.8"
+    folder.mkdir(parents=True)
+    header = "# Time\t" + "\t".join(f"c{i}" for i in range(15)) + "\n"
+
+    def rows(times: list[float], value: float) -> str:
+        return "".join(f"{t}" + f"\t{value}" * 15 + "\n" for t in times)
+
+    (folder / "meltPoolMetrics.dat").write_text(header + rows([12.81, 12.82], 1.0))
+    newer = folder / "meltPoolMetrics_12.8.dat"
+    newer.write_text(header + rows([12.81, 12.82, 12.83, 12.84], 2.0))
+    os.utime(newer, (time.time() + 10, time.time() + 10))
+    table = read_function_object_metrics(tmp_path)
+    np.testing.assert_array_equal(table[:, 0], [12.81, 12.82, 12.83, 12.84])
+    assert (table[:, 1:] == 2.0).all()

@@ -220,6 +220,29 @@ def test_the_domain_must_stop_filling_and_heating(mass_drift: float, heat_drift:
 
 
 @pytest.mark.unit
+def test_the_part_ahead_of_the_section_is_judged_where_its_table_covers() -> None:
+    """A continued weld whose workpiece behind the section still cools (the
+    domain's heat falls by 10 % of the throughput) while the part ahead of
+    the section is steady: judged on the part ahead where its table covers
+    the windows, on the domain where it starts only later (a run continued
+    from a saved state that did not write it)."""
+    times, table = bead(4.0)
+    cooling = domain(4.0, heat_drift=-0.1)
+    steady_ahead = domain(4.0)
+    for first_row, region, steady in ((0.0, "ahead of the section", True),
+                                      (3.5, "domain", False)):
+        kept = steady_ahead.times >= first_row
+        balance = DomainBalance(
+            cooling.times, cooling.mass, cooling.enthalpy, cooling.wire_times,
+            cooling.added_mass, cooling.added_enthalpy, cooling.laser_times,
+            cooling.laser_power,
+            (steady_ahead.times[kept], steady_ahead.mass[kept], steady_ahead.enthalpy[kept]))
+        verdict = judge(times, table, balance=balance)
+        assert verdict.balance.region == region
+        assert verdict.steady is steady, verdict.reason
+
+
+@pytest.mark.unit
 def test_totals_since_each_restart_continue() -> None:
     """A restart's droplet table counts its added metal from 0 again."""
     first_run = np.array([0.0, 1.0, 2.0, 3.0])

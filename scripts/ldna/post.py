@@ -29,6 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import foamcase
 from .case import Case
 from .material import Metal, two_metals
 
@@ -580,13 +581,12 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
 
 
 def read_function_object_metrics(case: Case | Path, name: str = "meltPoolMetrics") -> np.ndarray:
-    """Rows (time, metrics...) of postProcessing/<name>/*/meltPoolMetrics.dat, by time."""
-    rows = []
-    for data in sorted((Path(case) / "postProcessing" / name).glob("*/meltPoolMetrics.dat")):
-        rows.append(np.loadtxt(data, comments="#", ndmin=2))
-    if not rows:
+    """Rows (time, metrics...) of postProcessing/<name>/*/meltPoolMetrics.dat
+    by time, of every run (a run restarted from the same time as an earlier
+    one writes ``meltPoolMetrics_<time>.dat``: its rows replace the earlier)."""
+    table = foamcase.read_function_object(Path(case), name, "meltPoolMetrics.dat")
+    if table.size == 0:
         raise FileNotFoundError(f"no postProcessing/{name}/*/meltPoolMetrics.dat in {case}")
-    table = np.vstack(rows)
     return table[np.argsort(table[:, 0], kind="stable")]
 
 

@@ -75,6 +75,10 @@ MIN_WINDOW = 0.25
 BALANCE_TOLERANCE = 0.02
 #: The table of the totals ahead of the bead section (function object and file)
 UPSTREAM_TOTALS = ("upstreamTotals", "upstreamTotals")
+#: The totals ahead of the section are judged when their table starts within
+#: this share of the judged span after its start (its first row comes a
+#: few steps after the run's start); else the domain's totals are
+AHEAD_COVER_SLACK = 0.05
 #: Column of each wire's metal added since the run's start in the droplet
 #: sources' tables (``<wire>_addedMass``)
 ADDED_MASS_SUFFIX = "_addedMass"
@@ -215,7 +219,7 @@ class BalanceDrift:
     #: ambient plus the laser's absorbed power [W]
     mass_throughput: float
     heat_throughput: float
-    #: Where the totals are summed (DomainBalance.region)
+    #: Where the totals are summed: "domain" or "ahead of the section"
     region: str = "domain"
 
     @property
@@ -246,9 +250,9 @@ class DomainBalance:
     #: Steps of the laser's table: time and power absorbed [W] (empty without)
     laser_times: np.ndarray
     laser_power: np.ndarray
-    #: Where the totals are summed: the whole domain, or its part ahead of
-    #: the bead section (``upstreamTotals``)
-    region: str = "domain"
+    #: Rows of the ``upstreamTotals`` table, if the run wrote it: time, metal
+    #: mass and total enthalpy of the domain's part ahead of the bead section
+    ahead: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
 
     @classmethod
     def of(cls, case: Path) -> "DomainBalance | None":
@@ -296,22 +300,26 @@ class DomainBalance:
             laser_power = laser["absorbedMetal"] + laser["absorbedGas"]
         except (FileNotFoundError, ValueError):
             laser_times = laser_power = np.zeros(0)
-        times, mass, enthalpy = balances["time"], balances["metal_mass"], balances["enthalpy"]
-        region = "domain"
         try:
-            ahead = case.table(*UPSTREAM_TOTALS)
-            times, mass, enthalpy = ahead["Time"], ahead["metalMass"], ahead["totalEnthalpy"]
-            region = "ahead of the section"
+            table = case.table(*UPSTREAM_TOTALS)
+            ahead = tuple(np.asarray(table[column], dtype=float)
+                          for column in ("Time", "metalMass", "totalEnthalpy"))
         except (FileNotFoundError, ValueError):
-            pass
-        return cls(np.asarray(times, dtype=float), np.asarray(mass, dtype=float),
-                   np.asarray(enthalpy, dtype=float),
+            ahead = None
+        return cls(balances["time"], balances["metal_mass"], balances["enthalpy"],
                    wire_times, _continued(added_mass), _continued(added_enthalpy),
-                   np.asarray(laser_times), np.asarray(laser_power), region)
+                   np.asarray(laser_times), np.asarray(laser_power), ahead)
 
     def drift(self, start: float, end: float) -> BalanceDrift | None:
-        """Rates and throughputs over [start, end]; None if a table does not cover it."""
-        inside = (self.times >= start) & (self.times <= end)
+        """Rates and throughputs over [start, end]; None if a table does not
+        cover it.  The totals ahead of the section where their table covers
+        the span (a run continued from a saved state that did not write it
+        has it from its own start only), else the domain's."""
+        times, mass, enthalpy, region = self.times, self.mass, self.enthalpy, "domain"
+        if self.ahead is not None and self.ahead[0].size > 1 and (
+                self.ahead[0][0] <= start + AHEAD_COVER_SLACK * (end - start)):
+            (times, mass, enthalpy), region = self.ahead, "ahead of the section"
+        inside = (times >= start) & (times <= end)
         fed = (self.wire_times >= start) & (self.wire_times <= end)
         if inside.sum() < 2 or fed.sum() < 2:
             return None
@@ -322,9 +330,9 @@ class DomainBalance:
         lit = (self.laser_times >= start) & (self.laser_times <= end)
         if lit.sum() > 1:
             heat += window_mean(self.laser_times, self.laser_power, start, end)
-        return BalanceDrift(_slope(self.times[inside], self.mass[inside]),
-                            _slope(self.times[inside], self.enthalpy[inside]),
-                            mass_throughput, heat, self.region)
+        return BalanceDrift(_slope(times[inside], mass[inside]),
+                            _slope(times[inside], enthalpy[inside]),
+                            mass_throughput, heat, region)
 
 
 def _case_scalar(case: Case, file: str, entry: str, default: float) -> float:

@@ -6,6 +6,7 @@ import json
 import math
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -319,3 +320,28 @@ def test_a_run_still_growing_is_not_steady(ldna_case: Case) -> None:
              log_name="foamDictionary")
     with pytest.raises(ValueError, match="no droplet temperature"):
         DomainBalance.of(case.path)
+
+
+@pytest.mark.unit
+def test_span_means_of_a_ramp(tmp_path: Path) -> None:
+    """``ldna means``: over [1, 3] s a metric rising linearly from 0 at 0 s
+    to 4 at 4 s has the mean 2 (the ramp's midpoint) and the largest value
+    3; a laser's constant absorbed power is its mean."""
+    metrics = tmp_path / "postProcessing" / "meltPoolMetrics" / "0"
+    metrics.mkdir(parents=True)
+    times = np.linspace(0.0, 4.0, 401)
+    header = "# Time\t" + "\t".join(f"c{i}" for i in range(15)) + "\n"
+    metrics.joinpath("meltPoolMetrics.dat").write_text(header + "".join(
+        f"{t:.4f}" + f"\t{t:.6f}" * 15 + "\n" for t in times))
+    laser = tmp_path / "postProcessing" / "laser" / "0"
+    laser.mkdir(parents=True)
+    laser.joinpath("power.dat").write_text(
+        "# Time\tabsorbedMetal\tabsorbedGas\n"
+        + "".join(f"{t:.4f}\t250\t150\n" for t in times))
+    figures = steady_module.span_means(tmp_path, 1.0, 3.0)
+    assert figures["bead_area_mean"] == pytest.approx(2.0, rel=1e-9)
+    assert figures["bead_area_max"] == pytest.approx(3.0, rel=1e-9)
+    assert figures["laser_absorbedMetal_mean"] == pytest.approx(250.0, rel=1e-12)
+    assert "laser_absorbedPool_mean" not in figures
+    with pytest.raises(ValueError, match="not within"):
+        steady_module.span_means(tmp_path, 3.0, 5.0)

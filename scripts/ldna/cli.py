@@ -108,6 +108,15 @@ def _steady(args: argparse.Namespace) -> int:
     return 0
 
 
+def _means(args: argparse.Namespace) -> int:
+    from . import steady
+
+    figures = steady.span_means(Path(args.case), args.start, args.end, args.section)
+    print(json.dumps(figures) if args.json else
+          "\n".join(f"{key:<36}{value:12.5g}" for key, value in figures.items()))
+    return 0
+
+
 def _steady_start(args: argparse.Namespace) -> int:
     from . import steady_start
     from .case import Case
@@ -371,6 +380,19 @@ def build_parser() -> argparse.ArgumentParser:
     steady_command.add_argument("--json", action="store_true",
                                 help="print the verdict and every metric's figures as JSON (SI)")
     steady_command.set_defaults(func=_steady)
+
+    means = commands.add_parser(
+        "means",
+        help="time-weighted means (and largest values) of the section's metrics and the "
+             "laser's absorbed power over a span of a run (SI)",
+    )
+    means.add_argument("case", type=_case, help="case directory")
+    means.add_argument("start", type=float, help="the span's start [s]")
+    means.add_argument("end", type=float, help="the span's end [s]")
+    means.add_argument("--section", default="meltPoolMetrics",
+                       help="the meltPoolMetrics function object (default: meltPoolMetrics)")
+    means.add_argument("--json", action="store_true", help="print the figures as JSON")
+    means.set_defaults(func=_means)
 
     start = commands.add_parser(
         "steady-start",

@@ -452,6 +452,46 @@ def case_steadiness(case: Path, section: str = "meltPoolMetrics",
     return judge(times, table, arrival, min_window, DomainBalance.of(case))
 
 
+#: Columns of the laser's power table averaged by ``span_means`` [W]
+LASER_COLUMNS = ("absorbedMetal", "absorbedGas", "absorbedPool", "absorbedDeposit",
+                 "absorbedSubstrate")
+
+
+def span_means(case: Path, start: float, end: float,
+               section: str = "meltPoolMetrics") -> dict[str, float]:
+    """Time-weighted means over [start, end] of every column the section's
+    function object wrote (``<metric>_mean``, SI) and their largest values
+    (``<metric>_max``: a bond that forms only where the beam's ends pass),
+    and of the laser's absorbed power by region (``laser_<column>_mean``
+    [W]) if the case has a laser.  What a study compares over the same span
+    of each member's own bead."""
+    rows = post.read_function_object_metrics(case, section)
+    # A restart's table repeats the rows after its start time: keep the last
+    _, last = np.unique(rows[::-1, 0], return_index=True)
+    rows = rows[::-1][last]
+    times = rows[:, 0]
+    if not (times[0] <= start < end <= times[-1]):
+        raise ValueError(f"{case}: the span {start:g}-{end:g} s is not within the "
+                         f"section's table ({times[0]:g}-{times[-1]:g} s)")
+    inside = (times >= start) & (times <= end)
+    figures: dict[str, float] = {"start_s": start, "end_s": end}
+    columns = post.BeadMetrics.FUNCTION_OBJECT_COLUMNS
+    for index, name in enumerate(columns[:rows.shape[1] - 1]):
+        values = rows[:, 1 + index]
+        figures[f"{name}_mean"] = window_mean(times, values, start, end)
+        figures[f"{name}_max"] = float(values[inside].max())
+    try:
+        laser = Case(case).table("laser", "power")
+    except (FileNotFoundError, ValueError):
+        return figures
+    laser_times = np.asarray(laser["Time"], dtype=float)
+    for column in LASER_COLUMNS:
+        if column in laser.dtype.names:
+            figures[f"laser_{column}_mean"] = window_mean(
+                laser_times, np.asarray(laser[column], dtype=float), start, end)
+    return figures
+
+
 def format_steadiness(verdict: Steadiness) -> str:
     """A table of the metrics' window means, as a welding engineer reads them."""
     scale = {name: (1e6, "mm2") if name.endswith("area") else (1.0, "-")

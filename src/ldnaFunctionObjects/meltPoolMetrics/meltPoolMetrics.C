@@ -6,6 +6,7 @@
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "checkedInput.H"
+#include "functionObjectKeys.H"
 #include "cellLinks.H"
 #include "ListListOps.H"
 #include <algorithm>
@@ -60,19 +61,16 @@ Foam::IOdictionary readThermophysicalProperties(const Foam::fvMesh& mesh)
 
 void Foam::functionObjects::meltPoolMetrics::readCoeffs(const dictionary& dict)
 {
-    // Its own entries and those of every function object (functionObject,
-    // timeControl, writeFile)
+    // Its own entries and those of every function object
     ldna::checkKeys
     (
         dict,
-        {
-            "type", "libs", "region", "enabled", "log", "timeStart",
-            "timeEnd", "executeControl", "executeInterval", "writeControl",
-            "writeInterval", "writePrecision", "writeToFile", "useUserTime",
+        ldna::functionObjectKeys
+        ({
             "T", "alpha", "surfaceHeight", "weldingDirection",
             "verticalDirection", "fusionTemperature", "poolTemperature",
             "metalThreshold", "beadSection"
-        }
+        })
     );
 
     TName_ = dict.lookupOrDefault<word>("T", "T");

@@ -5,6 +5,7 @@
 #include "upstreamTotals.H"
 #include "metalGasMixture.H"
 #include "checkedInput.H"
+#include "functionObjectKeys.H"
 #include "physicalLimits.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -24,17 +25,14 @@ namespace functionObjects
 
 void Foam::functionObjects::upstreamTotals::readCoeffs(const dictionary& dict)
 {
-    // Its own entries and those of every function object (functionObject,
-    // timeControl, writeFile)
+    // Its own entries and those of every function object
     ldna::checkKeys
     (
         dict,
-        {
-            "type", "libs", "region", "enabled", "log", "timeStart",
-            "timeEnd", "executeControl", "executeInterval", "writeControl",
-            "writeInterval", "writePrecision", "writeToFile", "useUserTime",
+        ldna::functionObjectKeys
+        ({
             "section", "weldingDirection"
-        }
+        })
     );
 
     const vector weld(1, 0, 0);

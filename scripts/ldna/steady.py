@@ -452,6 +452,9 @@ def case_steadiness(case: Path, section: str = "meltPoolMetrics",
     return judge(times, table, arrival, min_window, DomainBalance.of(case))
 
 
+#: ``span_means`` needs the section's table to cover the span to within this
+#: share of its length at either end
+SPAN_COVER_SLACK = 0.01
 #: Columns of the laser's power table averaged by ``span_means`` [W]
 LASER_COLUMNS = ("absorbedMetal", "absorbedGas", "absorbedPool", "absorbedDeposit",
                  "absorbedSubstrate")
@@ -470,7 +473,10 @@ def span_means(case: Path, start: float, end: float,
     _, last = np.unique(rows[::-1, 0], return_index=True)
     rows = rows[::-1][last]
     times = rows[:, 0]
-    if not (times[0] <= start < end <= times[-1]):
+    # The table's rows come every few steps: its last may lie a little
+    # before the run's end
+    slack = SPAN_COVER_SLACK * (end - start)
+    if not (times[0] - slack <= start < end <= times[-1] + slack):
         raise ValueError(f"{case}: the span {start:g}-{end:g} s is not within the "
                          f"section's table ({times[0]:g}-{times[-1]:g} s)")
     inside = (times >= start) & (times <= end)

@@ -160,6 +160,10 @@ def test_a_saved_state_continues_its_weld(ldna_case: Case, tmp_path: Path) -> No
         assert float(row["metal_mass"]) == pytest.approx(float(match["metal_mass"][0]), rel=1e-8)
     assert float(other.balances()["time"][0]) == float(STOP_TIME), \
         "a case with other knobs got the state's history"
+    # The totals ahead of the section continue too: the judge reads them over
+    # the windows before the start
+    ahead = same.table("upstreamTotals", "upstreamTotals")
+    assert float(ahead["Time"][0]) < float(STOP_TIME) < float(ahead["Time"][-1])
     # The other weld starts at the state's time: its bead reaches a section
     # that long after the continued weld's (which started at 0)
     section = 0.02

@@ -30,7 +30,8 @@ STATE_FIELDS = ("alpha.metal", "T", "U", "p", "p_rgh", "fillerFraction")
 MESH_FILES = ("boundary", "faces", "neighbour", "owner", "points")
 #: Tables ``ldna steady`` judges: postProcessing folder, file name
 HISTORY_TABLES = (("meltPoolMetrics", "meltPoolMetrics"), ("balances", "balances"),
-                  ("wireDroplets", "droplets"), ("laser", "power"))
+                  ("upstreamTotals", "upstreamTotals"), ("wireDroplets", "droplets"),
+                  ("laser", "power"))
 #: Rows of a history table kept at most this often [s]: the per-step
 #: tables' 5 400 rows a second would be most of the state's size, and the
 #: judge's window means and slopes do not need them

@@ -131,6 +131,8 @@ def read_table(case: Path, name: str, file: str) -> np.ndarray:
         if path is None:
             continue
         rows = _parse_table(path)
+        if rows is None:
+            continue
         columns = list(rows.dtype.names)
         rows = np.column_stack([rows[column] for column in columns])
         start = float(directory.name)
@@ -150,10 +152,15 @@ def _is_number(text: str) -> bool:
     return True
 
 
-def _parse_table(path: Path) -> np.ndarray:
-    """One writeFile table as a structured array (a line still being written is left out)."""
+def _parse_table(path: Path) -> np.ndarray | None:
+    """One writeFile table as a structured array (a line still being written
+    is left out); None for a table without its header (writeFile opens the
+    file when the function object is made and writes the header with the
+    first row: a run that ended before its first row leaves it empty)."""
     lines = path.read_text().splitlines()
     header = [line for line in lines if line.startswith("#")]
+    if not header:
+        return None
     columns = header[-1].lstrip("#").split()
     rows = [line.split() for line in lines if line and not line.startswith("#")]
     rows = [row for row in rows if len(row) == len(columns)]

@@ -6,7 +6,9 @@ parameters.  After snappyHexMesh's refinement the process zone (the bead and
 pool box and the droplet column of caseParameters) must hold cubic cells of
 0.45 mm / 2^level, but for the fusion skin (the substrate's top skinDepth
 under the zone), whose cells are split 2^skinLevel times across the
-surface, and the cells must grow outside it.  A process zone that
+surface, and the cells must grow outside it.  With bandLevel the cells
+where the weld a run starts from has its metal's surface, its pool and its
+droplets are split again, and only those.  A process zone that
 misses the laser's footprint or the droplets is refused.  The gmsh route
 (ldna gmsh-mesh, Allrun -gmsh) must give the same mesh as blockMesh.
 """
@@ -21,6 +23,7 @@ import pytest
 
 from ldna import meshing
 from ldna.case import Case
+from ldna.foamcase import RUN_FUNCTIONS
 from ldna.foamdict import read_scalars
 
 TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
@@ -31,6 +34,16 @@ GMSH_VOLUME_TOLERANCE = 1e-7
 SKIN_LEVEL = 2
 #: Cubic cells: edge lengths of the refined cells equal within this
 CUBE_TOLERANCE = 0.02
+#: The template's saved quasi-steady weld, which the band test starts from
+STEADY_WELD = Path(__file__).resolve().parents[1] / "cases" / "steadyWeld"
+#: Cells between metal and gas in the band test: a margin inside the band's
+#: own 0.02-0.98 (system/topoSetDict.band), so that the check does not
+#: repeat its choice
+SURFACE_FRACTIONS = (0.05, 0.95)
+#: Depth below which the band test expects the zone's substrate unsplit [mm]:
+#: the saved weld does not melt the substrate, and the band grows its pool
+#: by one 0.45 mm cell
+DEEP_SUBSTRATE_MM = 1.0
 #: Simulated time of the run on the gmsh mesh [s] (a few steps)
 GMSH_RUN_TIME = "0.0005"
 
@@ -82,8 +95,9 @@ def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Case, level: int) 
     print(f"level {level}: {n_cells} cells, {inside.sum()} well inside the process zone, "
           f"{skin.sum()} of them in the skin")
     assert cubes.sum() > 0 and skin.sum() > 0
-    assert np.allclose(volumes[cubes], h**3, rtol=3 * CUBE_TOLERANCE)
-    assert np.allclose(volumes[skin], h**3 / skin_layers, rtol=3 * CUBE_TOLERANCE)
+    # (atol 0: cell volumes are some 1e-11 m3, below numpy's default atol)
+    assert np.allclose(volumes[cubes], h**3, rtol=3 * CUBE_TOLERANCE, atol=0)
+    assert np.allclose(volumes[skin], h**3 / skin_layers, rtol=3 * CUBE_TOLERANCE, atol=0)
     # as many skin layers as split cells: the skin's cells stack in
     # columns of skinDepth / (h / skin_layers)
     layer_depths = np.unique(np.round(depth[skin], 9))
@@ -91,7 +105,64 @@ def test_process_zone_has_cubic_cells_of_the_level(ldna_case: Case, level: int) 
     # Outside the zone and its buffer the cells are the base cells
     far = ~zone_mask(centres, p, shrink=-4 * base)
     assert volumes[far].min() > 0.9 * (base / 2) ** 3
-    assert np.isclose(volumes.max(), base**3, rtol=0.1)
+    assert np.isclose(volumes.max(), base**3, rtol=0.1, atol=0)
+
+def test_band_refines_only_the_start_welds_surface_pool_and_droplets(ldna_case: Case) -> None:
+    """Level 0 with bandLevel 1, started from the saved weld: the weld's
+    metal surface up to the bead section and the droplets' column lie in
+    cubes of h/2 (three cells on a droplet's radius), the zone's deep
+    substrate keeps h, and the mesh has under half the cells of the zone
+    refined throughout (level 1)."""
+    ldna_case.set("system/caseParameters", "bandLevel", "1")
+    start_time = max(float(t.name) for t in Case(STEADY_WELD).times)
+    n_cells = meshing.mesh_case(ldna_case, start=(STEADY_WELD, start_time))
+    checked = ldna_case.run("checkMesh", check=False)
+    assert "Mesh OK" in checked.output
+
+    p = read_scalars(ldna_case / "system" / "caseParameters")
+    h = 1e-3 * meshing.process_cell_size(0)
+    assert meshing.finest_cell_size(ldna_case, 0) == pytest.approx(0.5e3 * h)
+    centres = cell_field(ldna_case, "writeCellCentres", "C")
+    volumes = cell_field(ldna_case, "writeCellVolumes", "V")
+    # The weld mapped onto the refined mesh, as Allrun -start-from does
+    ldna_case.run("setFields")
+    ldna_case.run(f". '{RUN_FUNCTIONS}' && startFromState '{STEADY_WELD}' {start_time:g}",
+                  log_name="startFromState")
+    alpha = ldna_case.field("alpha.metal", f"{start_time:g}")
+
+    fine = np.isclose(volumes, (h / 2) ** 3, rtol=3 * CUBE_TOLERANCE, atol=0)
+    coarse = np.isclose(volumes, h**3, rtol=3 * CUBE_TOLERANCE, atol=0)
+    inside = zone_mask(centres, p, shrink=2 * h)
+    x, z = centres[:, 0] * 1e3, centres[:, 2] * 1e3
+    before_section = x < p["processPosition"] + p["beadSectionDistance"]
+    surface = inside & before_section & (alpha > SURFACE_FRACTIONS[0]) & (alpha < SURFACE_FRACTIONS[1])
+    column = zone_mask(centres, {**p, "processZoneHalfWidth": 0.0}, shrink=2 * h)
+    deep = inside & (z < -DEEP_SUBSTRATE_MM)
+    zone_volume = 1e-9 * (
+        (p["processZoneUpstream"] + p["processZoneDownstream"]) * 2 * p["processZoneHalfWidth"]
+        * (p["processZoneDepth"] + p["beadZoneHeight"]))
+    print(f"{n_cells} cells; {fine.sum()} of h/2, {surface.sum()} at the weld's surface, "
+          f"{column.sum()} in the droplet column, {deep.sum()} in the deep substrate; "
+          f"the zone refined throughout: {zone_volume / (h / 2) ** 3:.0f}")
+    assert surface.sum() > 1000 and column.sum() > 1000 and deep.sum() > 1000
+    assert fine[surface].all() and fine[column].all()
+    assert coarse[deep].all()
+    assert meshing.droplet_radius(p) / (0.5e3 * h) >= 3 - CUBE_TOLERANCE
+    assert n_cells < 0.5 * zone_volume / (h / 2) ** 3
+
+
+@pytest.mark.parametrize("value,start,message", [
+    ("1", False, "start from one"),
+    ("0.5", True, "not a whole number"),
+])
+def test_band_needs_a_start_and_a_whole_level(ldna_case: Case, value: str, start: bool,
+                                              message: str) -> None:
+    ldna_case.set("system/caseParameters", "bandLevel", value)
+    start_state = (STEADY_WELD, max(float(t.name) for t in Case(STEADY_WELD).times))
+    with pytest.raises(RuntimeError, match="bandLevel") as failure:
+        meshing.mesh_case(ldna_case, start=start_state if start else None)
+    assert message in str(failure.value)
+
 
 @pytest.mark.parametrize("entry,value,message", [
     ("processZoneHalfWidth", "5", "laser's oscillation"),

@@ -30,7 +30,7 @@ import numpy as np
 
 from . import meshing
 from .case import Case
-from .foamcase import BALANCES, PROJECT_DIR
+from .foamcase import BALANCES, PROJECT_DIR, RUN_FUNCTIONS
 from .foamdict import read_scalars
 from .stefan import NeumannSolution, front_position
 
@@ -46,8 +46,9 @@ class Scene(Protocol):
     def set_resolution(self, case: Case, level: float) -> float:
         """Mesh ``case`` at ``level``; return the finest cell size [mm]."""
 
-    def prepare(self, case: Case) -> None:
-        """Make the mesh and initial fields."""
+    def prepare(self, case: Case, start: "StartState | None") -> None:
+        """Make the mesh (refined where ``start`` has its weld, if the case
+        asks for it) and the initial fields."""
 
     def run(self, case: Case, member: "Member") -> None:
         """Run the solver on the member's case (decomposed for its ranks)."""
@@ -58,9 +59,6 @@ class Scene(Protocol):
     def exact(self, case: Case, end_time: float) -> dict[str, float] | None:
         """Analytical outputs at ``end_time``, or None (compare with the finest run)."""
 
-
-#: The cases' shell steps (startFromState: a run's state mapped onto a case)
-RUN_FUNCTIONS = PROJECT_DIR / "bin" / "tools" / "RunFunctions"
 
 #: The LDNA scenes' outputs: label, unit and factor from SI to that unit
 LDNA_OUTPUTS = {
@@ -91,14 +89,15 @@ class LdnaScene:
 
     def set_resolution(self, case: Case, level: float) -> float:
         meshing.set_level(case, level)
+        finest = meshing.finest_cell_size(case, level)
         # The metrics at the end time only: at write times, and the end is one
         for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
             case.run(f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
                      "system/controlDict", log_name="foamDictionary")
-        return meshing.process_cell_size(level)
+        return finest
 
-    def prepare(self, case: Case) -> None:
-        case.mesh()
+    def prepare(self, case: Case, start: "StartState | None") -> None:
+        case.mesh(start=(start.case, start.time) if start else None)
         case.run("setFields")
 
     def run(self, case: Case, member: "Member") -> None:
@@ -158,7 +157,7 @@ class BeadScene(LdnaScene):
 
     def set_resolution(self, case: Case, level: float) -> float:
         meshing.set_level(case, level)
-        return meshing.process_cell_size(level)
+        return meshing.finest_cell_size(case, level)
 
     def run(self, case: Case, member: "Member") -> None:
         from . import post, steady
@@ -225,7 +224,7 @@ class StefanScene:
         case.set("system/caseParameters", "deltaT", f"{self.level0_delta_t / 2**level:.9g}")
         return case.scalar("system/caseParameters", "barLength") / cells
 
-    def prepare(self, case: Case) -> None:
+    def prepare(self, case: Case, start: "StartState | None") -> None:
         case.run("blockMesh")
 
     def run(self, case: Case, member: "Member") -> None:
@@ -358,7 +357,7 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if member.max_co is not None:
         case.set(control, "maxCo", f"{member.max_co:g}")
         case.set(control, "maxAlphaCo", f"{member.max_co:g}")
-    scene.prepare(case)
+    scene.prepare(case, start)
     if start:
         start.map_onto(case)
     member.cells = case.cells

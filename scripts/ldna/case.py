@@ -80,9 +80,11 @@ class Case:
 
     # Mesh and runs
 
-    def mesh(self) -> int:
-        """Mesh as the template's Allrun does; the number of cells."""
-        return meshing.mesh_case(self.path)
+    def mesh(self, start: tuple[Path, float] | None = None) -> int:
+        """Mesh as the template's Allrun does (with ``start`` = (run, time):
+        as ``Allrun -start-from``, which refines the band there); the number
+        of cells."""
+        return meshing.mesh_case(self.path, start)
 
     @property
     def cells(self) -> int:

@@ -17,6 +17,8 @@ import numpy as np
 #: Root of the ldnaFoam project (this file is scripts/ldna/foamcase.py)
 PROJECT_DIR = Path(__file__).resolve().parents[2]
 ENV_SCRIPT = PROJECT_DIR / "bin" / "ldna-env"
+#: The cases' shell steps (bin/tools/RunFunctions: meshing, starting from a state)
+RUN_FUNCTIONS = PROJECT_DIR / "bin" / "tools" / "RunFunctions"
 
 
 @dataclass

@@ -210,28 +210,50 @@ def write_mesh_levels(case: Path) -> list[Path]:
     return [write_level_file(case, level) for level in range(MAX_LEVEL + 1)]
 
 
-def skin_level(case: Path) -> int:
-    """How often the fusion skin is split across the substrate surface (0: no skin)."""
+def _split_count(case: Path, dictionary: str, entry: str) -> int:
+    """A caseParameters count of splits (0 where the case lacks ``system/<dictionary>``)."""
     case = Path(case)
-    if not (case / "system" / "refineMeshDict").is_file():
+    if not (case / "system" / dictionary).is_file():
         return 0
-    value = read_scalars(case / "system" / "caseParameters").get("skinLevel", 0.0)
+    value = read_scalars(case / "system" / "caseParameters").get(entry, 0.0)
     if not (value >= 0 and value == int(value)):
-        raise ValueError(f"{case}/system/caseParameters: skinLevel {value} is not a whole number >= 0")
+        raise ValueError(f"{case}/system/caseParameters: {entry} {value} is not a whole number >= 0")
     return int(value)
 
 
-def mesh_case(case: Path) -> int:
+def skin_level(case: Path) -> int:
+    """How often the fusion skin is split across the substrate surface (0: no skin)."""
+    return _split_count(case, "refineMeshDict", "skinLevel")
+
+
+def band_level(case: Path) -> int:
+    """How often the band (the start's surface, pool and droplets) is split (0: no band)."""
+    return _split_count(case, "topoSetDict.band", "bandLevel")
+
+
+def finest_cell_size(case: Path, level: float) -> float:
+    """Cubic cell size [mm] of the band, or of the process zone without one."""
+    return process_cell_size(level) / 2**band_level(case)
+
+
+def mesh_case(case: Path, start: tuple[Path, float] | None = None) -> int:
     """Mesh an LDNA case as its Allrun does (blockMesh, snappyHexMesh's
     refinement of the process zone, the fusion skin split ``skinLevel``
-    times by topoSet + refineMesh); return the number of cells."""
-    from .foamcase import run
+    times by topoSet + refineMesh, and with ``start`` = (run, time) the band
+    where that state has its surface, pool and droplets split ``bandLevel``
+    times); return the number of cells."""
+    from .foamcase import RUN_FUNCTIONS, run
 
     run(case, "blockMesh")
     run(case, "snappyHexMesh -overwrite")
     for split in range(1, skin_level(case) + 1):
         run(case, "topoSet", log_name=f"topoSet.skin{split}")
         run(case, "refineMesh -overwrite", log_name=f"refineMesh.skin{split}")
+    start_case, start_time = start if start else ("", 0.0)
+    # The shell step of Allrun (bin/tools/RunFunctions); without a start it
+    # refuses a bandLevel above 0
+    run(case, f". '{RUN_FUNCTIONS}' && refineBand '{Path(start_case).resolve() if start else ''}' "
+              f"{start_time:g}", log_name="refineBand")
     return cell_count(case)
 
 

@@ -111,28 +111,41 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         V*(Su - (rDeltaT - Sp)*max(psiMin, 0.0) + psiI*rDeltaT)
     );
 
-    // The sweeps visit only the internal faces that carry a correction: a
+    // The sweeps visit only the internal faces that carry a correction (a
     // face without one adds nothing to its cells' fluxes, so its factor
-    // changes no other (in bulk metal and gas, most faces)
+    // changes no other: in bulk metal and gas, most faces), the boundary
+    // faces, and the cells of both: on a fine mesh a sweep over every face
+    // and cell cost more than the rest of the metal fraction's solution
     DynamicList<label> correctedFaces(nInternal);
+    boolList active(psi.size(), false);
     for (label facei = 0; facei < nInternal; ++facei)
     {
         if (phiCorr[facei] != 0)
         {
             correctedFaces.append(facei);
+            active[owner[facei]] = true;
+            active[neighbour[facei]] = true;
         }
     }
+    for (const fvPatch& patch : mesh_.boundary())
+    {
+        UIndirectList<bool>(active, patch.faceCells()) = true;
+    }
+    const labelList activeCells(findIndices(active, true));
 
+    const label nBoundary = mesh_.nFaces() - nInternal;
     scalarField lambda(mesh_.nFaces(), 1);
-    scalarField lambda0(lambda.size());
-    scalarField limitedOutflow(psi.size());
-    scalarField limitedInflow(psi.size());
+    scalarField boundaryLambda0(nBoundary);
+    scalarField limitedOutflow(psi.size(), 0);
+    scalarField limitedInflow(psi.size(), 0);
 
     for (sweeps_ = 1; sweeps_ <= maxSweeps_; ++sweeps_)
     {
-        lambda0 = lambda;
-        limitedOutflow = 0;
-        limitedInflow = 0;
+        for (const label celli : activeCells)
+        {
+            limitedOutflow[celli] = 0;
+            limitedInflow[celli] = 0;
+        }
 
         for (const label facei : correctedFaces)
         {
@@ -170,7 +183,7 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         // gives off what it may lose plus what it takes in
         scalarField& inFactor = limitedOutflow;
         scalarField& outFactor = limitedInflow;
-        forAll(inFactor, celli)
+        for (const label celli : activeCells)
         {
             const scalar out = limitedOutflow[celli];
             const scalar in = limitedInflow[celli];
@@ -187,19 +200,24 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         }
 
         // A face's factor: the lesser of its upwind cell's out-factor and
-        // its downwind cell's in-factor
+        // its downwind cell's in-factor.  Factors only fall: the sweeps
+        // stop when none falls by more than the tolerance
+        scalar largestFall = 0;
         for (const label facei : correctedFaces)
         {
             const label own = owner[facei];
             const label nei = neighbour[facei];
-            lambda[facei] = min
+            const scalar l = min
             (
                 lambda[facei],
                 phiCorr[facei] > 0
               ? min(outFactor[own], inFactor[nei])
               : min(inFactor[own], outFactor[nei])
             );
+            largestFall = max(largestFall, lambda[facei] - l);
+            lambda[facei] = l;
         }
+        boundaryLambda0 = scalarField::subField(lambda, nBoundary, nInternal);
         forAll(mesh_.boundary(), patchi)
         {
             const fvPatch& patch = mesh_.boundary()[patchi];
@@ -231,7 +249,13 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         // Both sides of a processor face take the lesser factor
         syncTools::syncFaceList(mesh_, lambda, minEqOp<scalar>());
 
-        if (returnReduce(max(lambda0 - lambda), maxOp<scalar>()) <= tolerance_)
+        for (label i = 0; i < nBoundary; ++i)
+        {
+            largestFall =
+                max(largestFall, boundaryLambda0[i] - lambda[nInternal + i]);
+        }
+
+        if (returnReduce(largestFall, maxOp<scalar>()) <= tolerance_)
         {
             break;
         }

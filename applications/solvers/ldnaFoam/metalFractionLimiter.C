@@ -6,6 +6,7 @@
 #include "checkedInput.H"
 #include "fvcSurfaceIntegrate.H"
 #include "syncTools.H"
+#include "bitSet.H"
 #include "wedgeFvPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -111,90 +112,110 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         V*(Su - (rDeltaT - Sp)*max(psiMin, 0.0) + psiI*rDeltaT)
     );
 
-    // The sweeps visit only the internal faces that carry a correction (a
-    // face without one adds nothing to its cells' fluxes, so its factor
-    // changes no other: in bulk metal and gas, most faces), the boundary
-    // faces, and the cells of both: on a fine mesh a sweep over every face
-    // and cell cost more than the rest of the metal fraction's solution
-    DynamicList<label> correctedFaces(nInternal);
-    boolList active(psi.size(), false);
-    for (label facei = 0; facei < nInternal; ++facei)
-    {
-        if (phiCorr[facei] != 0)
-        {
-            correctedFaces.append(facei);
-            active[owner[facei]] = true;
-            active[neighbour[facei]] = true;
-        }
-    }
-    for (const fvPatch& patch : mesh_.boundary())
-    {
-        UIndirectList<bool>(active, patch.faceCells()) = true;
-    }
-    const labelList activeCells(findIndices(active, true));
-
+    // Each sweep sums the limited fluxes of every cell, takes the cells'
+    // factors and lowers the faces' factors to them.  A cell whose faces'
+    // factors did not change in the last sweep has the same sums and
+    // factors, and a face whose cells' factors did not change keeps its
+    // factor: after the first sweep only the cells of the faces that
+    // changed are visited (on a fine mesh the sweeps over every face and
+    // cell cost more than the rest of the metal fraction's solution).
+    // Each visited cell sums its faces in increasing face order, as a sweep
+    // over all faces does, so the factors are those of full sweeps to the
+    // last bit.  Only faces that carry a correction contribute: in bulk
+    // metal and gas most faces carry none.
+    const cellList& cellFaces = mesh_.cells();
+    const labelList& faceOwner = mesh_.faceOwner();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     const label nBoundary = mesh_.nFaces() - nInternal;
+
+    // The correction through every face, boundary faces included
+    scalarField faceCorr(mesh_.nFaces(), 0);
+    SubList<scalar>(faceCorr, nInternal) = phiCorr.primitiveField();
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        SubList<scalar>(faceCorr, patch.size(), patch.start()) =
+            phiCorr.boundaryField()[patchi];
+    }
+
+    // Each cell's faces that take part (internal faces with a correction,
+    // all boundary faces), in increasing order; cells without any do not
+    // take part
+    labelList firstFace(psi.size() + 1, 0);
+    DynamicList<label> faces(nInternal/4);
+    DynamicList<label> activeCells(psi.size()/4);
+    forAll(cellFaces, celli)
+    {
+        const label begin = faces.size();
+        for (const label facei : cellFaces[celli])
+        {
+            if (facei >= nInternal || faceCorr[facei] != 0)
+            {
+                faces.append(facei);
+            }
+        }
+        if (faces.size() > begin)
+        {
+            std::sort(faces.begin() + begin, faces.end());
+            activeCells.append(celli);
+        }
+        firstFace[celli + 1] = faces.size();
+    }
+
     scalarField lambda(mesh_.nFaces(), 1);
+    scalarField inFactor(psi.size(), 1);
+    scalarField outFactor(psi.size(), 1);
     scalarField boundaryLambda0(nBoundary);
-    scalarField limitedOutflow(psi.size(), 0);
-    scalarField limitedInflow(psi.size(), 0);
+    // Cells to visit in this sweep, and the cells of faces that changed
+    DynamicList<label> visit(activeCells);
+    bitSet marked(psi.size());
+    DynamicList<label> changed(activeCells.size());
+
+    const auto markCells = [&](const label facei)
+    {
+        const label own = faceOwner[facei];
+        if (marked.set(own))
+        {
+            changed.append(own);
+        }
+        if (facei < nInternal && marked.set(neighbour[facei]))
+        {
+            changed.append(neighbour[facei]);
+        }
+    };
 
     for (sweeps_ = 1; sweeps_ <= maxSweeps_; ++sweeps_)
     {
-        for (const label celli : activeCells)
+        // A cell takes in what it may gain plus what it gives off, and
+        // gives off what it may lose plus what it takes in
+        for (const label celli : visit)
         {
-            limitedOutflow[celli] = 0;
-            limitedInflow[celli] = 0;
-        }
-
-        for (const label facei : correctedFaces)
-        {
-            const scalar f = lambda[facei]*phiCorr[facei];
-            if (f > 0)
+            scalar limitedOut = 0;
+            scalar limitedIn = 0;
+            for (label j = firstFace[celli]; j < firstFace[celli + 1]; ++j)
             {
-                limitedOutflow[owner[facei]] += f;
-                limitedInflow[neighbour[facei]] += f;
-            }
-            else
-            {
-                limitedInflow[owner[facei]] -= f;
-                limitedOutflow[neighbour[facei]] -= f;
-            }
-        }
-        forAll(mesh_.boundary(), patchi)
-        {
-            const fvPatch& patch = mesh_.boundary()[patchi];
-            const scalarField& phiCorrp = phiCorr.boundaryField()[patchi];
-            forAll(phiCorrp, i)
-            {
-                const scalar f = lambda[patch.start() + i]*phiCorrp[i];
+                const label facei = faces[j];
+                // Outward from this cell
+                const scalar f =
+                    (faceOwner[facei] == celli ? 1 : -1)
+                   *lambda[facei]*faceCorr[facei];
                 if (f > 0)
                 {
-                    limitedOutflow[patch.faceCells()[i]] += f;
+                    limitedOut += f;
                 }
                 else
                 {
-                    limitedInflow[patch.faceCells()[i]] -= f;
+                    limitedIn -= f;
                 }
             }
-        }
-
-        // A cell takes in what it may gain plus what it gives off, and
-        // gives off what it may lose plus what it takes in
-        scalarField& inFactor = limitedOutflow;
-        scalarField& outFactor = limitedInflow;
-        for (const label celli : activeCells)
-        {
-            const scalar out = limitedOutflow[celli];
-            const scalar in = limitedInflow[celli];
             inFactor[celli] = max
             (
-                min((out + maxGain[celli])/(inflow[celli] + ROOTVSMALL), 1),
+                min((limitedOut + maxGain[celli])/(inflow[celli] + ROOTVSMALL), 1),
                 0
             );
             outFactor[celli] = max
             (
-                min((in + maxLoss[celli])/(outflow[celli] + ROOTVSMALL), 1),
+                min((limitedIn + maxLoss[celli])/(outflow[celli] + ROOTVSMALL), 1),
                 0
             );
         }
@@ -202,46 +223,57 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         // A face's factor: the lesser of its upwind cell's out-factor and
         // its downwind cell's in-factor.  Factors only fall: the sweeps
         // stop when none falls by more than the tolerance
-        scalar largestFall = 0;
-        for (const label facei : correctedFaces)
-        {
-            const label own = owner[facei];
-            const label nei = neighbour[facei];
-            const scalar l = min
-            (
-                lambda[facei],
-                phiCorr[facei] > 0
-              ? min(outFactor[own], inFactor[nei])
-              : min(inFactor[own], outFactor[nei])
-            );
-            largestFall = max(largestFall, lambda[facei] - l);
-            lambda[facei] = l;
-        }
         boundaryLambda0 = scalarField::subField(lambda, nBoundary, nInternal);
-        forAll(mesh_.boundary(), patchi)
+        scalar largestFall = 0;
+        changed.clear();
+        for (const label celli : visit)
         {
-            const fvPatch& patch = mesh_.boundary()[patchi];
-            const scalarField& phiCorrp = phiCorr.boundaryField()[patchi];
-            const scalarField& phip = phi.boundaryField()[patchi];
-            const bool coupled = psi.boundaryField()[patchi].coupled();
-
-            forAll(phiCorrp, i)
+            for (label j = firstFace[celli]; j < firstFace[celli + 1]; ++j)
             {
-                scalar& l = lambda[patch.start() + i];
-                const label celli = patch.faceCells()[i];
-
-                if (isA<wedgeFvPatch>(patch))
+                const label facei = faces[j];
+                scalar l = lambda[facei];
+                if (facei < nInternal)
                 {
-                    l = 0;
-                }
-                // Other boundaries limit only where metal leaves
-                else if (coupled || phip[i] + phiCorrp[i] > SMALL*SMALL)
-                {
+                    const label own = owner[facei];
+                    const label nei = neighbour[facei];
                     l = min
                     (
                         l,
-                        phiCorrp[i] > 0 ? outFactor[celli] : inFactor[celli]
+                        faceCorr[facei] > 0
+                      ? min(outFactor[own], inFactor[nei])
+                      : min(inFactor[own], outFactor[nei])
                     );
+                }
+                else
+                {
+                    const label patchi = patches.whichPatch(facei);
+                    const fvPatch& patch = mesh_.boundary()[patchi];
+                    const label i = facei - patch.start();
+                    if (isA<wedgeFvPatch>(patch))
+                    {
+                        l = 0;
+                    }
+                    // Other boundaries limit only where metal leaves
+                    else if
+                    (
+                        psi.boundaryField()[patchi].coupled()
+                     || phi.boundaryField()[patchi][i] + faceCorr[facei]
+                      > SMALL*SMALL
+                    )
+                    {
+                        l = min
+                        (
+                            l,
+                            faceCorr[facei] > 0
+                          ? outFactor[celli] : inFactor[celli]
+                        );
+                    }
+                }
+                if (l < lambda[facei])
+                {
+                    largestFall = max(largestFall, lambda[facei] - l);
+                    lambda[facei] = l;
+                    markCells(facei);
                 }
             }
         }
@@ -251,13 +283,28 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
 
         for (label i = 0; i < nBoundary; ++i)
         {
-            largestFall =
-                max(largestFall, boundaryLambda0[i] - lambda[nInternal + i]);
+            const label facei = nInternal + i;
+            if (lambda[facei] < boundaryLambda0[i])
+            {
+                largestFall =
+                    max(largestFall, boundaryLambda0[i] - lambda[facei]);
+                markCells(facei);
+            }
         }
 
         if (returnReduce(largestFall, maxOp<scalar>()) <= tolerance_)
         {
             break;
+        }
+
+        visit.clear();
+        for (const label celli : changed)
+        {
+            marked.unset(celli);
+            if (firstFace[celli + 1] > firstFace[celli])
+            {
+                visit.append(celli);
+            }
         }
     }
     sweeps_ = min(sweeps_, maxSweeps_);

@@ -20,6 +20,11 @@ from ldna.foamdict import read_scalars
 #: Lowest acceptable observed order of the front (the scheme is first order
 #: in time and second in space; measured 2.25 on levels 0-2)
 MIN_ORDER = 1.0
+#: Simulated time of the band study's members [s]
+BAND_RUN_TIME = 0.002
+#: Metal of the saved weld on the band's mesh against level 0's: equal but
+#: for the round-off of summing more cells
+MAPPED_METAL_TOLERANCE = 1e-9
 
 
 def test_stefan_front_converges_with_the_mesh(tmp_path: Path) -> None:
@@ -118,3 +123,35 @@ def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
         assert budget.added > 0
         assert budget.relative_residual < 5e-3
     assert written["levels"][1]["cells"] > written["levels"][0]["cells"]
+
+
+def test_band_level_from_the_saved_weld(tmp_path: Path) -> None:
+    """``--band``: level 1 is level 0 with the saved weld's surface, pool and
+    droplet column split once.  Levels 0 and 1 from the saved weld for 2 ms
+    (a droplet per wire in flight): level 1's band has the droplet-resolving
+    cells (0.225 mm) on under three times level 0's cells (level 1 refined
+    throughout: six times); both start with the saved weld's metal, which
+    the refinement keeps (each split cell's eight children take its metal
+    fraction)."""
+    import copy
+
+    from ldna.balance import metal_mass_balance
+    from ldna.case import Case
+
+    steady_weld = PROJECT_DIR / "cases" / "steadyWeld"
+    start_time = max(float(t.name) for t in Case(steady_weld).times)
+    scene = copy.copy(accuracy.SCENES["ldna"])
+    scene.band = True
+    study, _ = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study", scene,
+                                  levels=[0, 1], end_time=start_time + BAND_RUN_TIME,
+                                  start=accuracy.StartState(steady_weld, start_time))
+    written = json.loads((tmp_path / "study" / "accuracy.json").read_text())
+    coarse, banded = written["levels"]
+    print(f"cells: level 0 {coarse['cells']}, level 1 (band) {banded['cells']}; "
+          f"core-h per simulated s {coarse['core_hours_per_simulated_s']:.2f}, "
+          f"{banded['core_hours_per_simulated_s']:.2f}")
+    assert coarse["cell_mm"] == pytest.approx(0.45) and banded["cell_mm"] == pytest.approx(0.225)
+    assert coarse["cells"] < banded["cells"] < 3 * coarse["cells"]
+    starts = [metal_mass_balance(tmp_path / "study" / "members" / member.name).start
+              for member in study.members]
+    assert starts[1] == pytest.approx(starts[0], rel=MAPPED_METAL_TOLERANCE)

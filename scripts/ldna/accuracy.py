@@ -87,9 +87,21 @@ class LdnaScene:
     #: Process-zone cells of 0.45, 0.32 and 0.225 mm (level 1 resolves droplets)
     default_levels = (0.0, 0.5, 1.0)
 
+    #: Levels of 1 and more refine only the band (system/topoSetDict.band):
+    #: level L is level L - 1 with its band split once (--band)
+    band = False
+
+    def mesh_level(self, case: Case, level: float) -> float:
+        """Set the case's mesh for ``level``; the finest cell size [mm]."""
+        banded = self.band and level >= 1
+        process_level = level - 1 if banded else level
+        meshing.set_level(case, process_level)
+        if banded:
+            case.set("system/caseParameters", "bandLevel", "1")
+        return meshing.finest_cell_size(case, process_level)
+
     def set_resolution(self, case: Case, level: float) -> float:
-        meshing.set_level(case, level)
-        finest = meshing.finest_cell_size(case, level)
+        finest = self.mesh_level(case, level)
         # The metrics at the end time only: at write times, and the end is one
         for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
             case.run(f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
@@ -156,8 +168,7 @@ class BeadScene(LdnaScene):
     MAX_SPAN = 3.0
 
     def set_resolution(self, case: Case, level: float) -> float:
-        meshing.set_level(case, level)
-        return meshing.finest_cell_size(case, level)
+        return self.mesh_level(case, level)
 
     def run(self, case: Case, member: "Member") -> None:
         from . import post, steady

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import copy
 import json
 import os
 import sys
@@ -69,6 +70,17 @@ def _accuracy(args: argparse.Namespace) -> int:
     from . import accuracy
 
     scene = None if args.scene == "auto" else accuracy.SCENES[args.scene]
+    if args.band:
+        scene = scene or accuracy.detect_scene(Path(args.case))
+        if not isinstance(scene, accuracy.LdnaScene):
+            print("ldna accuracy: --band needs --scene ldna or bead", file=sys.stderr)
+            return 2
+        if not args.start_from:
+            print("ldna accuracy: --band refines where --start-from has its weld: give it",
+                  file=sys.stderr)
+            return 2
+        scene = copy.copy(scene)
+        scene.band = True
     start = None
     if args.start_from:
         if args.start_time is None:
@@ -329,6 +341,11 @@ def build_parser() -> argparse.ArgumentParser:
                                "(mapped onto each level's mesh; with --start-time)")
     accuracy.add_argument("--start-time", type=_finite_float, metavar="T",
                           help="the reconstructed time of --start-from to start at [s]")
+    accuracy.add_argument("--band", action="store_true",
+                          help="LDNA: levels of 1 and more refine only the band where the "
+                               "--start-from weld has its metal's surface, its pool and its "
+                               "droplets (level L: level L-1 with that band split once, "
+                               "bandLevel in caseParameters)")
     accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
     accuracy.add_argument("--resume", action="store_true",
                           help="continue the members that ran before from their latest "

@@ -1,9 +1,9 @@
-"""Serial and MPI runs of the LDNA template agree within solver tolerance.
+"""Serial and MPI runs of the LDNA template agree.
 
-The template scene (level 0) runs once serially and once on two ranks
-(decomposePar, mpirun -np 2, reconstructPar), with every linear solver
-converged to 1e-13 so that the decomposition can change the answer only at
-that level; the fields must then agree to well below any physical scale.
+The template scene (level 0) runs once serially and on 2, 3 and 4 ranks
+(decomposePar, mpirun, reconstructPar; 3 and 4 oversubscribe a 2-core
+machine), with every linear solver converged to 1e-13 so that the
+decomposition can change the answer only at that level.
 
 Compared at 15 ms, after the first droplets have been inserted (9.7 ms)
 and before they land (about 18 ms): once droplets splash onto the surface
@@ -11,14 +11,22 @@ as bodies, thin splash films amplify round-off (measured at 25 ms: metal
 fractions differing by up to 0.24 in single splash cells).  The metal
 fraction and the pressure are compared everywhere, temperature and velocity
 in the metal: a gas cell's temperature is that of the trace of metal it
-holds (one temperature per cell), and the gas at the open side boundaries,
-where its flux is near zero and inletOutlet switches with its sign, moves
-differently by 2.5 % of its 8 mm/s scale.  The template with its laser, Marangoni flow,
-evaporation, surface losses and porosity, once without and once with the
-droplets.  With the droplets the runs differed by 3.5e-4 of T's scale
-while the energy iteration's slope left out the mass flowing into a cell,
-and the iteration swung between two states in gas cells that droplet metal
-runs into; with that mass counted (TEqn.H) they agree to 1.4e-6.
+holds (one temperature per cell).  The template with its laser, Marangoni
+flow, evaporation, surface losses and porosity, once without and once with
+the droplets.
+
+With droplets the runs differed by up to 0.08 in a cell's metal fraction
+(2 ranks): the upwind predictor's linear solution leaves metal fractions
+of 1e-43 to 1e-9, of either sign, in gas and metal cells, which depend on
+the decomposition and which the flow and heat of the gas cells amplified.
+Set to 0 and 1 (traceMetalFraction 1e-8, metalFractionLimiter), 2 ranks
+agree with the serial run to 1.6e-4 in metal fraction here (1.7e-6 with
+the energy iteration converged too, liquidFractionTolerance 1e-10); 3 and
+4 ranks, whose processor faces pass 1.7 mm from the second wire's
+droplets, to 3.7e-4 and 1.6e-4:
+there gas cells holding 1e-6 to 1e-4 of the hot droplet's metal (its heat
+capacity rivals the gas's) differ by up to 70 K, and the gas's density
+and flow carry that back to the metal fraction.
 """
 from __future__ import annotations
 
@@ -33,6 +41,8 @@ from ldna.balance import WIRE_COLUMNS, metal_mass_balance, wire_table
 from ldna.case import Case
 from ldna.foamdict import keep_blocks
 
+TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
+
 #: Time of the comparison [s]
 END_TIME = "0.015"
 #: Temperature [K] the laser brings the metal above by END_TIME (ambient 300 K)
@@ -42,6 +52,11 @@ SOLVER_TOLERANCE = "1e-13"
 #: Allowed difference relative to each field's scale; measured about 1e-6
 #: for T and U with the tolerance above (1e-4 with the template's own)
 FIELD_TOLERANCE = 1e-5
+#: The same with droplets in flight, on any number of ranks: the issue's
+#: bound for the template's own tolerances; measured here (2026-11-27):
+#: metal fraction 1.6e-4, 3.7e-4, 1.6e-4 and the metal's velocity 1.2e-4,
+#: 2.7e-4, 1.1e-4 on 2, 3 and 4 ranks
+DROPLET_FIELD_TOLERANCE = 1e-3
 
 
 def tighten_solvers(case: Case) -> None:
@@ -59,18 +74,7 @@ def tighten_solvers(case: Case) -> None:
 EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosity"]
 
 
-#: Measured (2026-11-27), the cause not yet removed.  The insertion is rank-independent (metal fractions within 3e-11
-#: after it, the droplets' masses equal to all digits); in the first steps
-#: of flight the difference grows about a thousandfold a step (Courant
-#: number 1.6e-9, 3.7e-7, 4.5e-4 apart) to 1.9e-3 at 10.5 ms and 6.9e-3 at
-#: 11.5 ms and 3.5e-2 at 15 ms with every solver at 1e-13
-DROPLETS_DIFFER = (
-    "with inserted droplets the serial and parallel runs differ by 1.4e-3 to 6.3e-2 in a "
-    "cell's metal fraction at 10.5-15 ms (the droplets in flight; the enthalpy-porosity "
-    "model amplifies round-off there, docs/limitations.md); 1e-10 without droplets")
-
-
-#: With droplets, what must hold meanwhile: the droplets' masses agree to
+#: With droplets: the droplets' masses agree to
 #: round-off (the insertion does not depend on the ranks), the metal masses
 #: differ by no more than what the runs let through the boundaries
 #: differently (trace metal of the droplets leaves through the atmosphere,
@@ -82,26 +86,47 @@ MASS_AGREEMENT = 1e-9
 DROPLET_DISPLACEMENT = 0.5
 
 
-@pytest.mark.parametrize("with_droplets", [
-    pytest.param(False, id="without_droplets"),
-    pytest.param(True, id="with_droplets"),
-])
-def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
-                                        with_droplets: bool) -> None:
-    serial = ldna_case
-    keep_blocks(serial / "constant" / "fvOptions",
-                EFFECTS + (["wireDroplets"] if with_droplets else []))
-    serial.set("system/controlDict", "endTime", END_TIME)
-    serial.set("system/controlDict", "writeInterval", END_TIME)
-    serial.set("system/controlDict", "writePrecision", "14")
-    tighten_solvers(serial)
-    serial.mesh()
-    serial.run("setFields")
-    parallel = Case(Path(shutil.copytree(serial, tmp_path / "parallel")))
+#: The serial runs, once per set of effects, shared by the rank counts
+_SERIAL_RUNS: dict[bool, Case] = {}
 
-    serial.run("ldnaFoam")
-    parallel.run("decomposePar")
-    parallel.run("ldnaFoam", n_procs=2)
+
+def serial_run(directory: Path, with_droplets: bool) -> Case:
+    """The template (level 0, ASCII) with the compared effects, run serially
+    to END_TIME with tight solvers, once per session and set of effects."""
+    name = "droplets" if with_droplets else "none"
+    if with_droplets not in _SERIAL_RUNS:
+        case = Case.copy_of(TEMPLATE, directory / name)
+        case.set("system/caseParameters", "level", "0")
+        case.set("system/controlDict", "writeFormat", "ascii")
+        keep_blocks(case / "constant" / "fvOptions",
+                    EFFECTS + (["wireDroplets"] if with_droplets else []))
+        case.set("system/controlDict", "endTime", END_TIME)
+        case.set("system/controlDict", "writeInterval", END_TIME)
+        case.set("system/controlDict", "writePrecision", "14")
+        tighten_solvers(case)
+        case.mesh()
+        case.run("setFields")
+        # The meshed start the parallel runs copy
+        shutil.copytree(case, directory / f"{name}-start")
+        case.run("ldnaFoam")
+        _SERIAL_RUNS[with_droplets] = case
+    return _SERIAL_RUNS[with_droplets]
+
+
+@pytest.mark.parametrize("with_droplets,n_procs", [
+    pytest.param(False, 2, id="without_droplets-np2"),
+    pytest.param(True, 2, id="with_droplets-np2"),
+    pytest.param(True, 3, id="with_droplets-np3"),
+    pytest.param(True, 4, id="with_droplets-np4"),
+])
+def test_serial_and_parallel_runs_agree(tmp_path_factory: pytest.TempPathFactory,
+                                        tmp_path: Path, with_droplets: bool,
+                                        n_procs: int) -> None:
+    serial = serial_run(tmp_path_factory.getbasetemp() / "parallelSerial", with_droplets)
+    parallel = Case(Path(shutil.copytree(serial.path.parent / f"{serial.path.name}-start",
+                                         tmp_path / "parallel")))
+    parallel.decompose(n_procs)
+    parallel.run("ldnaFoam", n_procs=n_procs)
     parallel.run("reconstructPar -latestTime")
 
     end_serial, end_parallel = serial.times[-1], parallel.times[-1]
@@ -132,8 +157,6 @@ def test_serial_and_parallel_runs_agree(ldna_case: Case, tmp_path: Path,
         scale = np.abs(a).max()
         difference = np.abs(a - b).max() / scale
         print(f"{field}: largest difference {difference:.2e} of its scale {scale:.6g}")
-        if with_droplets and difference >= FIELD_TOLERANCE:
-            pytest.xfail(DROPLETS_DIFFER)
-        assert difference < FIELD_TOLERANCE
+        assert difference < (DROPLET_FIELD_TOLERANCE if with_droplets else FIELD_TOLERANCE)
     # The scene is not trivial: the laser has heated the metal
     assert serial.field("T", end_serial).max() > HEATED

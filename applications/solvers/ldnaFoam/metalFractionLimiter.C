@@ -16,6 +16,7 @@ Foam::metalFractionLimiter::metalFractionLimiter(const fvMesh& mesh)
     mesh_(mesh),
     maxSweeps_(1),
     tolerance_(0),
+    traceFraction_(0),
     sweeps_(0)
 {}
 
@@ -329,6 +330,13 @@ void Foam::metalFractionLimiter::read(const word& psiName)
     (
         controls, "limiterTolerance", ldna::interval::closed(0, 1), 0
     );
+    // A larger one would remove metal, not the residue of a linear solution
+    const scalar largestTraceFraction = 1e-3;
+    traceFraction_ = ldna::getCheckedOrDefault<scalar>
+    (
+        controls, "traceMetalFraction",
+        ldna::interval::closed(0, largestTraceFraction), 0
+    );
 }
 
 
@@ -356,13 +364,36 @@ void Foam::metalFractionLimiter::correct
     fvc::surfaceIntegrate(divPhiCorr, phiCorr);
 
     const scalar rDeltaT = 1/mesh_.time().deltaTValue();
-    psi.primitiveFieldRef() =
+    scalarField& psiI = psi.primitiveFieldRef();
+    psiI =
         (rDeltaT*psi.primitiveField() + Su.field() - divPhiCorr)
        /(rDeltaT - Sp.field());
+
+    // The linear solution's residue in cells of gas or of metal
+    scalar traceVolume = 0;
+    if (traceFraction_ > 0)
+    {
+        const scalarField& V = mesh_.V();
+        forAll(psiI, celli)
+        {
+            const scalar whole =
+                psiI[celli] < traceFraction_ ? 0
+              : psiI[celli] > 1 - traceFraction_ ? 1
+              : psiI[celli];
+            traceVolume += (whole - psiI[celli])*V[celli];
+            psiI[celli] = whole;
+        }
+        reduce(traceVolume, sumOp<scalar>());
+    }
     psi.correctBoundaryConditions();
 
     Info<< "metalFractionLimiter: " << psi.name() << " limited in "
-        << sweeps_ << " sweeps" << endl;
+        << sweeps_ << " sweeps";
+    if (traceFraction_ > 0)
+    {
+        Info<< ", trace metal set to 0 and 1: " << traceVolume << " m3";
+    }
+    Info<< endl;
 }
 
 

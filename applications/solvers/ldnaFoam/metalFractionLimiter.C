@@ -139,9 +139,17 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
             phiCorr.boundaryField()[patchi];
     }
 
+    // Boundary faces that carry field values: not those of empty patches
+    // (whose fields have no values, as in one- and two-dimensional cases)
+    bitSet valuedFace(mesh_.nFaces());
+    for (const fvPatch& patch : mesh_.boundary())
+    {
+        valuedFace.set(labelRange(patch.start(), patch.size()));
+    }
+
     // Each cell's faces that take part (internal faces with a correction,
-    // all boundary faces), in increasing order; cells without any do not
-    // take part
+    // the valued boundary faces), in increasing order; cells without any do
+    // not take part
     labelList firstFace(psi.size() + 1, 0);
     DynamicList<label> faces(nInternal/4);
     DynamicList<label> activeCells(psi.size()/4);
@@ -150,7 +158,12 @@ Foam::scalarField Foam::metalFractionLimiter::faceFactors
         const label begin = faces.size();
         for (const label facei : cellFaces[celli])
         {
-            if (facei >= nInternal || faceCorr[facei] != 0)
+            if
+            (
+                facei < nInternal
+              ? faceCorr[facei] != 0
+              : valuedFace.test(facei)
+            )
             {
                 faces.append(facei);
             }
@@ -369,19 +382,18 @@ void Foam::metalFractionLimiter::correct
         (rDeltaT*psi.primitiveField() + Su.field() - divPhiCorr)
        /(rDeltaT - Sp.field());
 
-    // The linear solution's residue in cells of gas or of metal
+    // The linear solution's residue in the gas
     scalar traceVolume = 0;
     if (traceFraction_ > 0)
     {
         const scalarField& V = mesh_.V();
         forAll(psiI, celli)
         {
-            const scalar whole =
-                psiI[celli] < traceFraction_ ? 0
-              : psiI[celli] > 1 - traceFraction_ ? 1
-              : psiI[celli];
-            traceVolume += (whole - psiI[celli])*V[celli];
-            psiI[celli] = whole;
+            if (psiI[celli] < traceFraction_)
+            {
+                traceVolume -= psiI[celli]*V[celli];
+                psiI[celli] = 0;
+            }
         }
         reduce(traceVolume, sumOp<scalar>());
     }
@@ -391,7 +403,7 @@ void Foam::metalFractionLimiter::correct
         << sweeps_ << " sweeps";
     if (traceFraction_ > 0)
     {
-        Info<< ", trace metal set to 0 and 1: " << traceVolume << " m3";
+        Info<< ", trace metal removed: " << traceVolume << " m3";
     }
     Info<< endl;
 }

@@ -391,7 +391,7 @@ void Foam::metalFractionLimiter::correct
         {
             if (psiI[celli] < traceFraction_)
             {
-                traceVolume -= psiI[celli]*V[celli];
+                traceVolume += psiI[celli]*V[celli];
                 psiI[celli] = 0;
             }
         }

@@ -10,13 +10,14 @@ END_TIME to within the linear solvers' tolerance.
 from __future__ import annotations
 
 import sys
+import tarfile
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from ldna.balance import metal_mass_balance
-from ldna import post
+from ldna import foamcase, post
 from ldna.case import Case
 
 #: Where the interrupted run stops, and where both runs end [s]
@@ -32,6 +33,8 @@ FIELDS = ("alpha.metal", "T", "U", "p_rgh")
 #: The continued runs' end [s]: a few steps past the saved state
 CONTINUED_END = "0.016"
 LDNA = Path(sys.executable).parent / "ldna"
+#: The checkout the Allrun of a case outside it needs
+LDNA_DIR = Path(__file__).resolve().parents[1]
 
 
 def prepare(case: Case) -> None:
@@ -55,18 +58,39 @@ def test_restart_equals_uninterrupted_run(ldna_case: Case, tmp_path: Path) -> No
 
     interrupted.set("system/controlDict", "endTime", STOP_TIME)
     interrupted.run("ldnaFoam", log_name="ldnaFoam.first")
+    # The stopped run carried to another checkout (ldna pack / unpack) and
+    # continued there with the Allrun's -resume, as well as in place
+    archive = tmp_path / "interrupted.tar.xz"
+    interrupted.run(f"{LDNA} pack {interrupted.path} {archive}", log_name="pack")
+    with tarfile.open(archive) as tar:
+        names = [Path(name) for name in tar.getnames()]
+    assert not [n for n in names if n.name.startswith(("log.", "processor"))]
+    assert {n.parts[1] for n in names if len(n.parts) > 1 and n.parts[1][0].isdigit()} \
+        == {"0", STOP_TIME}
+    carried = Case(tmp_path / "elsewhere" / "carried")
+    interrupted.run(f"{LDNA} unpack {archive} {carried.path}", log_name="unpack")
+    carried.set("system/controlDict", "endTime", END_TIME)
+    carried.run(f"LDNA_DIR={LDNA_DIR} ./Allrun -resume", log_name="Allrun")
+
     interrupted.set("system/controlDict", "endTime", END_TIME)
     interrupted.run("ldnaFoam", log_name="ldnaFoam.restart")
     assert f"Create mesh for time = {STOP_TIME}" in \
         (interrupted / "log.ldnaFoam.restart").read_text(), "the second leg did not restart"
+    assert f"Create mesh for time = {STOP_TIME}" in (carried / "log.ldnaFoam").read_text(), \
+        "the unpacked run did not continue from the packed time"
+    # Its cost covers both legs: the first leg's timings came with it
+    assert len(foamcase.table_files(carried.path, *foamcase.TIME_INFO)) == 2
+    assert foamcase.simulated_seconds(carried.path) == pytest.approx(float(END_TIME), rel=1e-6)
 
-    for field in FIELDS:
-        a = straight.field(field, END_TIME)
-        b = interrupted.field(field, END_TIME)
-        scale = np.abs(a).max()
-        difference = np.abs(a - b).max() / scale
-        print(f"{field}: largest difference {difference:.3e} of its scale {scale:.4g}")
-        assert difference < FIELD_TOLERANCE
+    for continued in (interrupted, carried):
+        for field in FIELDS:
+            a = straight.field(field, END_TIME)
+            b = continued.field(field, END_TIME)
+            scale = np.abs(a).max()
+            difference = np.abs(a - b).max() / scale
+            print(f"{continued.name} {field}: largest difference {difference:.3e} "
+                  f"of its scale {scale:.4g}")
+            assert difference < FIELD_TOLERANCE
 
 
 #: The metal's budget of a run, as the stability tests hold it: 0.5 % of the

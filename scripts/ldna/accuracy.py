@@ -351,6 +351,10 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
         member.end_time = end_time if end_time is not None else case.scalar(control, "endTime")
         member.cells = case.cells
         member.n_procs = n_procs
+        if n_procs > 1 and not (directory / "processor0").is_dir():
+            # Unpacked (ldna unpack) or run serially before: its latest time
+            case.set_ranks(n_procs)
+            case.run("decomposePar -latestTime -force", log_name="decomposePar.resume")
         return _run_and_measure(case, scene, member)
     if directory.exists():
         shutil.rmtree(directory)

@@ -166,6 +166,13 @@ def _case(text: str) -> str:
     return text
 
 
+def _case_or_folder(text: str) -> str:
+    """An existing folder (a case, or one holding cases)."""
+    if not Path(text).is_dir():
+        raise argparse.ArgumentTypeError(f"'{text}' is not a folder")
+    return text
+
+
 def _whole_number(low: int, high: int | None, what: str = "") -> Callable[[str], int]:
     """An argparse type: a whole number in [low, high] (no upper bound: None)."""
     def parse(text: str) -> int:
@@ -225,6 +232,21 @@ def _post(args: argparse.Namespace) -> int:
         print(textwrap.fill(note, width=79))
     for picture in pictures:
         print(picture)
+    return 0
+
+
+def _pack(args: argparse.Namespace) -> int:
+    archive = state.pack_run(Path(args.run), Path(args.archive))
+    size = archive.stat().st_size / 2**20
+    print(f"{archive}: {args.run} packed ({size:.1f} MiB); elsewhere: ldna unpack {archive} RUN, "
+          "then continue RUN with its command's --resume (./Allrun -resume [-parallel], "
+          "ldna study or ldna accuracy ... --resume)")
+    return 0
+
+
+def _unpack(args: argparse.Namespace) -> int:
+    run = state.unpack_run(Path(args.archive), Path(args.run))
+    print(f"{run}: unpacked; continue it with its command's --resume")
     return 0
 
 
@@ -432,6 +454,21 @@ def build_parser() -> argparse.ArgumentParser:
                       help="seconds of tables before the time to keep "
                            f"[{state.HISTORY_SECONDS:g}]")
     save.set_defaults(func=_save_state)
+
+    pack = commands.add_parser(
+        "pack",
+        help="pack a run or a study that outlasts a session (mesh, initial and latest "
+             "time reconstructed, tables) into one .tar.xz, to continue it on another "
+             "checkout or machine (ldna unpack, then --resume)",
+    )
+    pack.add_argument("run", type=_case_or_folder, help="a case or a folder of cases (a study)")
+    pack.add_argument("archive", help="the .tar.xz to write")
+    pack.set_defaults(func=_pack)
+
+    unpack = commands.add_parser("unpack", help="unpack an archive of ldna pack")
+    unpack.add_argument("archive", help="the .tar.xz of ldna pack")
+    unpack.add_argument("run", help="folder to unpack into; must not exist")
+    unpack.set_defaults(func=_unpack)
 
     post.add_argument("--json", action="store_true",
                       help="print the bead figures as one JSON object (mm, mm2, K, deg) "

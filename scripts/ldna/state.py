@@ -116,3 +116,94 @@ def state_time(state: Path) -> str:
     if not times:
         raise FileNotFoundError(f"{state} holds no state")
     return times[-1].name
+
+
+# A run carried to another machine or checkout (``ldna pack``/``unpack``)
+
+#: What a packed case leaves out: the ranks' copies (its latest time is
+#: reconstructed first; a continuation decomposes it again), the times
+#: between its initial and its latest one, and its logs
+PACK_SKIPPED_PREFIXES = ("processor", "log.")
+
+
+def _is_case(path: Path) -> bool:
+    return (path / "system" / "controlDict").is_file()
+
+
+def _cases_in(folder: Path) -> list[Path]:
+    """``folder`` itself if it is a case, else the cases below it (a study's members)."""
+    if _is_case(folder):
+        return [folder]
+    return sorted(path.parents[1] for path in folder.rglob("system/controlDict")
+                  if "processor" not in path.parents[1].name)
+
+
+def _reconstruct_latest(case: Case) -> None:
+    """Reconstruct the ranks' latest time if it is newer than the case's."""
+    ranks = case / "processor0"
+    if not ranks.is_dir():
+        return
+    decomposed = Case(ranks).times
+    reconstructed = case.times
+    if decomposed and (not reconstructed
+                       or float(decomposed[-1].name) > float(reconstructed[-1].name) + 1e-12):
+        case.reconstruct()
+
+
+def pack_run(run: Path, archive: Path) -> Path:
+    """Pack ``run`` (a case, or a folder of cases such as a study) into the
+    xz-compressed tar ``archive``: per case its dictionaries, mesh, initial
+    and latest reconstructed time and its postProcessing tables (what a
+    continuation and the tools' verdicts and costs read)."""
+    import tarfile
+
+    run, archive = Path(run).resolve(), Path(archive)
+    cases = _cases_in(run)
+    if not cases:
+        raise FileNotFoundError(f"{run} holds no case (no system/controlDict)")
+    kept_times = set()
+    for path in cases:
+        case = Case(path)
+        _reconstruct_latest(case)
+        times = case.times
+        kept_times.update(t.resolve() for t in times[:1] + times[-1:])
+    case_times = {t.resolve() for path in cases for t in Case(path).times}
+
+    case_folders = {path.resolve() for path in cases}
+
+    def keep(member: tarfile.TarInfo) -> tarfile.TarInfo | None:
+        path = (run.parent / member.name).resolve()
+        if path.name.startswith(PACK_SKIPPED_PREFIXES) and path.parent in case_folders:
+            return None
+        if path in case_times and path not in kept_times:
+            return None
+        return member
+
+    archive.parent.mkdir(parents=True, exist_ok=True)
+    with tarfile.open(archive, "w:xz") as tar:
+        tar.add(run, arcname=run.name, filter=keep)
+    return archive
+
+
+def unpack_run(archive: Path, run: Path) -> Path:
+    """Unpack an archive of :func:`pack_run` as ``run`` (which must not
+    exist); continue it with ``Allrun -resume`` or the study's ``--resume``."""
+    import tarfile
+
+    archive, run = Path(archive), Path(run)
+    if run.exists():
+        raise FileExistsError(f"{run} exists: remove it or choose another folder")
+    with tarfile.open(archive, "r:xz") as tar:
+        names = tar.getnames()
+        tops = {name.split("/", 1)[0] for name in names}
+        if len(tops) != 1 or any(".." in Path(name).parts or Path(name).is_absolute()
+                                 for name in names):
+            raise ValueError(f"{archive} is not an archive of ldna pack (one folder)")
+        staging = run.parent / f".{run.name}.unpacking"
+        if staging.exists():
+            shutil.rmtree(staging)
+        staging.mkdir(parents=True)
+        tar.extractall(staging)
+    (staging / tops.pop()).rename(run)
+    staging.rmdir()
+    return run

@@ -364,10 +364,10 @@ def build_parser() -> argparse.ArgumentParser:
     accuracy.add_argument("--start-time", type=_finite_float, metavar="T",
                           help="the reconstructed time of --start-from to start at [s]")
     accuracy.add_argument("--band", action="store_true",
-                          help="LDNA: levels of 1 and more refine only the band where the "
+                          help="LDNA: every level refines only the band where the "
                                "--start-from weld has its metal's surface, its pool and its "
                                "droplets (level L: level L-1 with that band split once, "
-                               "bandLevel in caseParameters)")
+                               "bandLevel in caseParameters; levels from 0)")
     accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
     accuracy.add_argument("--resume", action="store_true",
                           help="continue the members that ran before from their latest "

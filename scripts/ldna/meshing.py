@@ -38,6 +38,11 @@ from .foamdict import read_scalars, set_entry
 LEVEL0_CELL = 0.45
 #: Highest level offered
 MAX_LEVEL = 3
+#: Lowest level offered: the base cells unsplit (0.9 mm).  Below 0 a droplet
+#: (0.68 mm radius) has less than the 1.5 cells on its radius that insert it
+#: as a body: only the background of a band (bandLevel >= 1), which splits
+#: the droplets' column and the weld's surface and pool
+MIN_LEVEL = -1
 #: Droplet diameter factor of the irregular start (paper eq. 25-27)
 IRREGULAR_DIAMETER_FACTOR = 2.0
 
@@ -60,8 +65,8 @@ class MeshCounts:
 
 def process_cell_size(level: float) -> float:
     """Cubic cell size [mm] of the process zone at a resolution level."""
-    if not 0 <= level <= MAX_LEVEL:
-        raise ValueError(f"level must be in [0, {MAX_LEVEL}], not {level}")
+    if not MIN_LEVEL <= level <= MAX_LEVEL:
+        raise ValueError(f"level must be in [{MIN_LEVEL}, {MAX_LEVEL}], not {level}")
     return LEVEL0_CELL / 2**level
 
 
@@ -258,8 +263,15 @@ def mesh_case(case: Path, start: tuple[Path, float] | None = None) -> int:
 
 
 def cell_count(case: Path) -> int:
-    """Cells of a case's mesh, from the header of constant/polyMesh/owner."""
-    header = (Path(case) / "constant" / "polyMesh" / "owner").read_bytes()[:2000]
+    """Cells of a case's mesh, from the header of constant/polyMesh/owner
+    (or of its gzipped copy, as a saved state keeps it)."""
+    owner = Path(case) / "constant" / "polyMesh" / "owner"
+    if owner.is_file():
+        header = owner.read_bytes()[:2000]
+    else:
+        import gzip
+        with gzip.open(owner.with_name("owner.gz")) as packed:
+            header = packed.read(2000)
     match = re.search(rb"nCells:\s*(\d+)", header)
     if not match:
         raise ValueError(f"{case}: no cell count in constant/polyMesh/owner")

@@ -35,6 +35,21 @@ def _bench(args: argparse.Namespace) -> int:
     return 0
 
 
+def _scaling(args: argparse.Namespace) -> int:
+    from . import scaling
+
+    if not all(n >= 1 and n == int(n) for n in args.ranks):
+        raise SystemExit("ldna scaling: --ranks must be whole numbers >= 1")
+    serial, efficiency, projections = scaling.scaling(
+        Path(args.serial_run), Path(args.serial_run), Path(args.parallel_run),
+        [int(n) for n in args.ranks])
+    if args.json:
+        print(json.dumps(scaling.as_json(serial, efficiency, projections)))
+    else:
+        print(scaling.table(serial, efficiency, projections))
+    return 0
+
+
 def _gmsh_mesh(args: argparse.Namespace) -> int:
     from . import gmsh_mesh
 
@@ -276,6 +291,20 @@ def build_parser() -> argparse.ArgumentParser:
     bench_laser.add_argument("--level", type=_level, default=1, help="mesh level (0..3)")
     bench_laser.add_argument("--steps", type=_positive_int, default=20, help="fixed time steps per run")
     bench_laser.set_defaults(func=_bench_laser)
+
+    scale = commands.add_parser(
+        "scaling",
+        help="strong scaling projected to a cluster's ranks from a serial and a 2-rank run "
+             "of the same window (the step's cost, the two ranks' efficiency), the case's "
+             "decompositions (cells, processor faces, neighbours of the busiest rank) and "
+             "the step's MPI traffic",
+    )
+    scale.add_argument("serial_run", type=_case, help="serial run of a few steps (its mesh counts)")
+    scale.add_argument("parallel_run", type=_case, help="the same steps on 2 ranks")
+    scale.add_argument("--ranks", type=_float_list, default=[1, 2, 4, 8, 16, 32, 64],
+                       metavar="N1,N2,...", help="rank counts [1,2,4,8,16,32,64]")
+    scale.add_argument("--json", action="store_true", help="print the figures as JSON")
+    scale.set_defaults(func=_scaling)
 
     bench = commands.add_parser(
         "bench",

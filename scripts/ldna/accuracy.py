@@ -14,7 +14,7 @@ time-step setting), runs each copy, and records
   of log(error) over log(cell size) at the finest time-step setting.
 
 It writes ``OUT/accuracy.csv``, ``OUT/accuracy.md`` (a Markdown table) and
-``OUT/accuracy.png`` (log-log error against core-seconds per simulated ms).
+``OUT/accuracy.png`` (log-log error against core-hours per simulated second).
 """
 from __future__ import annotations
 
@@ -559,7 +559,7 @@ def _level_or_finer(level: float | None) -> str:
 
 
 def plot(study: Study, path: Path) -> None:
-    """Log-log error against core-seconds per simulated millisecond."""
+    """Log-log error against core-hours per simulated second."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -568,7 +568,7 @@ def plot(study: Study, path: Path) -> None:
     meta = study.scene.outputs_meta
     figure, axes = plt.subplots(figsize=(7, 5))
     for name in meta:
-        points = sorted((m.core_seconds_per_ms, m.errors.get(name, math.nan), m)
+        points = sorted((m.core_hours_per_simulated_s, m.errors.get(name, math.nan), m)
                         for m in study.members if m.errors.get(name, 0) > 0)
         if not points:
             continue
@@ -578,7 +578,7 @@ def plot(study: Study, path: Path) -> None:
         for c, e, m in zip(cost, error, members):
             axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
                           xytext=(4, 4), fontsize=7)
-    axes.set_xlabel("core-seconds per simulated millisecond")
+    axes.set_xlabel("core-hours per simulated second")
     axes.set_ylabel(f"relative error against the {study.reference_name}")
     axes.set_title(f"{study.scene.name} scene: accuracy against cost")
     axes.grid(True, which="both", alpha=0.3)

@@ -71,6 +71,28 @@ def test_order_fit_recovers_a_known_order(order: float) -> None:
 
 
 @pytest.mark.unit
+def test_bond_errors_read_against_the_bead() -> None:
+    """Without fusion the reference's penetration, bonded width and dilution
+    are 0: a coarse level's 0.2 mm penetration is then 5 % of the 4 mm bead
+    height, its 1 mm bonded width 10 % of the 10 mm bead width, its dilution
+    of 0.02 an error of 0.02 (against 1); the bead's own metrics against
+    themselves."""
+    scene = accuracy.BeadScene()
+    reference = {"bead_width": 10e-3, "bead_height": 4e-3, "penetration": 0.0,
+                 "bonded_width": 0.0, "dilution": 0.0}
+    coarse = accuracy.Member(level=0, max_co=None, cell_size_mm=0.45)
+    coarse.outputs = {"bead_width": 11e-3, "bead_height": 4e-3, "penetration": 0.2e-3,
+                      "bonded_width": 1e-3, "dilution": 0.02}
+    fine = accuracy.Member(level=1, max_co=None, cell_size_mm=0.225)
+    fine.outputs = reference
+    accuracy.evaluate(scene, [coarse, fine], None)
+    assert coarse.errors["penetration"] == pytest.approx(0.2 / 4)
+    assert coarse.errors["bonded_width"] == pytest.approx(1 / 10)
+    assert coarse.errors["dilution"] == pytest.approx(0.02)
+    assert coarse.errors["bead_width"] == pytest.approx(0.1)
+
+
+@pytest.mark.unit
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
     12 % and 4 % on the width, 3 % and 1 % on the height.  The cheapest level

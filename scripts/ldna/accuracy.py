@@ -32,6 +32,7 @@ from . import meshing
 from .case import Case
 from .foamcase import BALANCES, PROJECT_DIR, RUN_FUNCTIONS
 from .foamdict import read_scalars
+from .steady import SCALES as STEADY_SCALES
 from .stefan import NeumannSolution, front_position
 
 
@@ -166,6 +167,12 @@ class BeadScene(LdnaScene):
     outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
         "bead_width", "bead_height", "bead_area", "wetting_angle", "bonded_width",
         "penetration", "dilution", "pool_length")}
+    #: Errors of the bond's metrics, which are 0 without fusion, are read
+    #: against the bead's size in their direction, as ldna steady reads them
+    #: (the penetration against the height, the bonded width against the
+    #: width, the dilution against 1); the bead's own against themselves
+    error_scales = {name: scale for name, scale in STEADY_SCALES.items()
+                    if name in ("bonded_width", "penetration", "dilution")}
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: the
@@ -425,10 +432,20 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         finest = min(at_finest_co, key=lambda m: m.cell_size_mm)
         reference, reference_name = finest.outputs, f"finest run ({finest.name})"
         fitted = [m for m in at_finest_co if m is not finest]
+    scales = getattr(scene, "error_scales", {})
+
+    def size(name: str) -> float:
+        """What an error is read against: the output itself, or at least the
+        bead's size in its direction (``error_scales``; None: 1)."""
+        if name not in scales:
+            return abs(reference.get(name, math.nan))
+        scale = 1.0 if scales[name] is None else abs(reference.get(scales[name], math.nan))
+        return max(abs(reference.get(name, math.nan)), scale)
+
     for member in members:
         member.errors = {
-            name: abs(value - reference[name]) / abs(reference[name])
-            if reference.get(name) else math.nan
+            name: abs(value - reference[name]) / size(name)
+            if name in reference and size(name) > 0 else math.nan
             for name, value in member.outputs.items()
         }
     orders = {}

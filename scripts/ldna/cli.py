@@ -108,7 +108,9 @@ def _accuracy(args: argparse.Namespace) -> int:
             end_time = (start.time if start else 0.0) + scene.MAX_SPAN
         print(f"ldna accuracy: each level runs until its bead is quasi-steady, at most to "
               f"{end_time:g} s, writing every {scene.STRETCH:g} s; if it stops, run the same "
-              "command with --resume", flush=True)
+              f"command with --resume (on another checkout or machine: ldna pack "
+              f"{args.output} ARCHIVE here, ldna unpack ARCHIVE {args.output} there)",
+              flush=True)
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
                                       end_time=end_time, n_procs=args.np, start=start,

@@ -61,3 +61,40 @@ def test_template_allrun_parallel(ldna_case: Case) -> None:
     assert outcome.returncode == 0, outcome.output
     assert [t.name for t in case.times] == ["0"]
     assert not (case / "processor0").exists()
+
+
+#: Where the first leg of a carried run stops [s]: half the shortened scene
+HALF_TIME = "0.0025"
+
+
+def test_a_packed_parallel_run_continues_on_its_ranks(ldna_case: Case, tmp_path) -> None:
+    """A run stopped on N_RANKS, packed (``ldna pack``: the ranks' latest time
+    reconstructed, no processor folders) and unpacked elsewhere continues with
+    ``./Allrun -parallel -resume``: its latest time is decomposed again and
+    the run goes on from it on the ranks to the end."""
+    import sys
+
+    case = ldna_case
+    for entry, value in (("endTime", HALF_TIME), ("writeInterval", HALF_TIME)):
+        case.set("system/controlDict", entry, value)
+    case.set("system/decomposeParDict", "numberOfSubdomains", str(N_RANKS))
+    outcome = run_as_user("./Allrun -parallel", cwd=case, LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output[-3000:]
+    ldna = f"{sys.executable} -m ldna.cli"
+    archive = tmp_path / "carried.tar.xz"
+    carried = Case(tmp_path / "elsewhere" / "carried")
+    for command in (f"{ldna} pack {case.path} {archive}",
+                    f"{ldna} unpack {archive} {carried.path}"):
+        outcome = run_as_user(command, cwd=tmp_path, LDNA_DIR=str(PROJECT_DIR))
+        assert outcome.returncode == 0, outcome.output[-3000:]
+    assert not (carried / "processor0").exists()
+    assert [t.name for t in carried.times] == ["0", HALF_TIME]
+    carried.set("system/controlDict", "endTime", END_TIME)
+    outcome = run_as_user("./Allrun -parallel -resume", cwd=carried, LDNA_DIR=str(PROJECT_DIR))
+    assert outcome.returncode == 0, outcome.output[-3000:]
+    assert (carried / "log.decomposePar.resume").is_file()
+    assert (carried / HALF_TIME / "T").is_file()
+    check_parallel_run(carried)
+    assert "Starting time loop" in (carried / "log.ldnaFoam").read_text()
+    first = float(carried.balances()["time"][0])
+    assert first < float(HALF_TIME), "the packed run's tables came along"

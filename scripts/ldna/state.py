@@ -203,7 +203,11 @@ def unpack_run(archive: Path, run: Path) -> Path:
         if staging.exists():
             shutil.rmtree(staging)
         staging.mkdir(parents=True)
-        tar.extractall(staging)
+        try:
+            # Regular files and folders only, where tarfile can check it
+            tar.extractall(staging, filter="data")
+        except TypeError:
+            tar.extractall(staging)
     (staging / tops.pop()).rename(run)
     staging.rmdir()
     return run

@@ -126,8 +126,9 @@ def _steady(args: argparse.Namespace) -> int:
 
     times, table, arrival = steady.case_table(Path(args.case), args.section)
     balance = steady.DomainBalance.of(Path(args.case))
-    verdict = steady.judge(times, table, arrival, balance=balance)
-    first = steady.first_steady(times, table, arrival, balance=balance)
+    min_window = args.min_window or steady.MIN_WINDOW
+    verdict = steady.judge(times, table, arrival, min_window, balance=balance)
+    first = steady.first_steady(times, table, arrival, min_window, balance=balance)
     if args.json:
         print(json.dumps({**verdict.as_dict(), "first_steady_s": first}))
     else:
@@ -447,6 +448,11 @@ def build_parser() -> argparse.ArgumentParser:
     steady_command.add_argument("--section", default="meltPoolMetrics",
                                 help="the meltPoolMetrics function object to judge "
                                      "(default: meltPoolMetrics)")
+    steady_command.add_argument("--min-window", type=_positive_float, default=None,
+                                metavar="S",
+                                help="shortest averaging window [s]: whole ripple periods of "
+                                     "at least this (default 0.25); longer for a bead whose "
+                                     "metrics swing more slowly than the windows")
     steady_command.add_argument("--json", action="store_true",
                                 help="print the verdict and every metric's figures as JSON (SI)")
     steady_command.set_defaults(func=_steady)

@@ -188,9 +188,28 @@ def test_bad_second_metal_stops_with_named_error(composite_bar: Case, descriptio
     assert_named_error(composite_bar, expected)
 
 
+def test_a_mapped_filler_fractions_round_off_is_clipped(composite_bar: Case) -> None:
+    """A start mapped volume-weighted onto a mesh that does not nest in its
+    source's leaves fractions 1 + 2e-16 (measured: 156 cells of the band's
+    level 0.5 from the saved weld); those within 1e-12 of [0, 1] are set to
+    the bound and the run goes on."""
+    z = np.linspace(0, 1, BAR_CELLS)
+    composite_bar.write_field("fillerFraction",
+                              values=np.where(z > 0.5, 1 + 1e-13, -1e-13))
+    composite_bar.set("system/controlDict", "endTime",
+                      composite_bar.value("system/controlDict", "deltaT"))
+    composite_bar.run("ldnaFoam")
+    log = (composite_bar / "log.ldnaFoam").read_text()
+    assert f"{BAR_CELLS} values within 1e-12 of [0, 1] set to its bounds" in log
+    filler = composite_bar.field("fillerFraction")
+    assert filler.min() >= 0 and filler.max() <= 1
+
+
 @pytest.mark.parametrize("value,expected", [
     ("1.5", ["fillerFraction", "1.5", "must lie in [0, 1]"]),
     ("-0.2", ["fillerFraction", "-0.2", "must lie in [0, 1]"]),
+    # Beyond a volume-weighted mapping's round-off (1e-12)
+    ("1.000001", ["fillerFraction", "1.000001", "must lie in [0, 1]"]),
     # OpenFOAM's reader refuses it first, naming the file and the token
     ("nan", ["fillerFraction", "nan"]),
 ])

@@ -30,6 +30,7 @@ import numpy as np
 
 from . import meshing
 from .case import Case
+from . import foamcase
 from .foamcase import BALANCES, PROJECT_DIR, RUN_FUNCTIONS
 from .foamdict import read_scalars
 from .steady import SCALES as STEADY_SCALES
@@ -400,6 +401,8 @@ def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
     member.wall_time = time.perf_counter() - began
     try:
         member.cpu_time = case.cpu_seconds()
+        # Every leg of a member that was continued (--resume), not this one's
+        member.wall_time = foamcase.clock_seconds(case.path)
     except FileNotFoundError:
         member.cpu_time = None
     if member.n_procs > 1:

@@ -198,6 +198,15 @@ def cpu_seconds(case: Path) -> float:
     return float(sum(_parse_table(path)["cpuTime"][-1] for path in files))
 
 
+def clock_seconds(case: Path) -> float:
+    """Wall-clock time [s] of all runs of the case (timeInfo's clockTime,
+    whole seconds)."""
+    files = table_files(case, *TIME_INFO)
+    if not files:
+        raise FileNotFoundError(f"no postProcessing/timeInfo in {case}")
+    return float(sum(_parse_table(path)["clockTime"][-1] for path in files))
+
+
 def simulated_seconds(case: Path) -> float:
     """Process time the case's runs simulated [s]: from each run's start
     (its timeInfo folder) to its last step; the tables a continued weld

@@ -205,9 +205,13 @@ def set_level(case: Path, level: float) -> None:
     for name in MESH_DICTIONARIES:
         dictionary = case / "system" / name
         text = dictionary.read_text()
+        included = f'#include "meshLevels/{path.name}"'
+        if included in text:
+            # Set before (a study that continues its members)
+            continue
         if LEVEL_INCLUDE not in text:
             raise ValueError(f"{dictionary} does not include its counts by '{LEVEL_INCLUDE}'")
-        dictionary.write_text(text.replace(LEVEL_INCLUDE, f'#include "meshLevels/{path.name}"'))
+        dictionary.write_text(text.replace(LEVEL_INCLUDE, included))
 
 
 def write_mesh_levels(case: Path) -> list[Path]:

@@ -322,9 +322,23 @@ Foam::metalGasMixture::metalGasMixture
                 U.mesh()
             )
         );
-        const scalarField& c = fillerFraction_->primitiveField();
+        // A field mapped volume-weighted from another mesh (Allrun
+        // -start-from) may exceed [0, 1] by the round-off of its weights:
+        // such values are clipped, anything further out is an error
+        const scalar mappingRoundOff = 1e-12;
+        scalarField& c = fillerFraction_->primitiveFieldRef();
+        label clipped = 0;
         forAll(c, celli)
         {
+            if
+            (
+                (c[celli] < 0 && c[celli] >= -mappingRoundOff)
+             || (c[celli] > 1 && c[celli] <= 1 + mappingRoundOff)
+            )
+            {
+                c[celli] = min(max(c[celli], scalar(0)), scalar(1));
+                ++clipped;
+            }
             if (!(c[celli] >= 0 && c[celli] <= 1))
             {
                 FatalIOError
@@ -336,6 +350,13 @@ Foam::metalGasMixture::metalGasMixture
                     << " [0, 1] (the filler's share of the metal's volume)"
                     << exit(FatalIOError);
             }
+        }
+        reduce(clipped, sumOp<label>());
+        if (clipped)
+        {
+            Info<< "Field " << fillerFractionName << ": " << clipped
+                << " values within " << mappingRoundOff << " of [0, 1] set to"
+                << " its bounds (a mapped field's round-off)" << endl;
         }
         fillerFraction_->oldTime();
 

@@ -176,9 +176,11 @@ class BeadScene(LdnaScene):
                     if name in ("bonded_width", "penetration", "dilution")}
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
-    #: Longest run of a level from its start without ``--end-time`` [s]: the
-    #: template from the estimate still drained at 2.7 s
-    MAX_SPAN = 3.0
+    #: Longest run of a level from its start without ``--end-time`` [s]: a
+    #: level mapped from the saved weld is judged from its bead's arrival
+    #: (1.48 s) plus four windows of whole ripple periods (0.44 s at the
+    #: band's level 0: 1.76 s), and may need stretches more
+    MAX_SPAN = 4.0
 
     def set_resolution(self, case: Case, level: float) -> float:
         return self.mesh_level(case, level)

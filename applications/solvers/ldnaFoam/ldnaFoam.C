@@ -36,20 +36,20 @@ Description
 #include "EulerDdtScheme.H"
 #include "localEulerDdtScheme.H"
 #include "gaussConvectionScheme.H"
-#include "metalFractionLimiter.H"
-#include "domainBalances.H"
-#include "metalSources.H"
-#include "fluxReconstruction.H"
+#include "alpha/metalFractionLimiter.H"
+#include "alpha/solidMetalFlux.H"
+#include "balances/domainBalances.H"
+#include "energy/boundedEnthalpyFlux.H"
+#include "energy/energyControls.H"
+#include "metal/metalSources.H"
+#include "pU/fluxReconstruction.H"
+#include "pU/upwindDensity.H"
+#include "time/capillaryDeltaT.H"
 #include "subCycle.H"
 #include "metalGasMixture.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
-#include "metalInsertion.H"
-#include "solidMetalMotion.H"
-#include "localMax.H"
-#include "localMin.H"
 #include "upwind.H"
-#include "convectionScheme.H"
 #include "checkedInput.H"
 #include "profiling.H"
 
@@ -87,18 +87,18 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readTimeControls.H"
-        #include "checkControls.H"
+        #include "time/checkControls.H"
         addProfiling(deltaT, "ldnaFoam.setDeltaT");
         #include "CourantNo.H"
         #include "alphaCourantNo.H"
-        #include "setDeltaT.H"
+        #include "time/adjustDeltaT.H"
         endProfiling(deltaT);
 
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        #include "storeEnergy.H"
+        #include "energy/storeEnergy.H"
 
         // --- Pressure-velocity PIMPLE corrector loop
         while (pimple.loop())
@@ -106,35 +106,30 @@ int main(int argc, char *argv[])
             // Each stage is timed when controlDict has profiling active
             addProfiling(alpha, "ldnaFoam.alpha");
             metal.collect(fvOptions, metalSourceDensity, alpha1);
-            #include "alphaControls.H"
-            #include "alphaEqnSubCycle.H"
-            #include "fillerEqn.H"
+            #include "alpha/metalFractionEqn.H"
+            #include "metal/fillerEqn.H"
             endProfiling(alpha);
 
             addProfiling(momentum, "ldnaFoam.UEqn");
-            #include "UEqn.H"
+            #include "pU/UEqn.H"
             endProfiling(momentum);
 
             addProfiling(energy, "ldnaFoam.TEqn");
-            #include "TEqn.H"
+            #include "energy/TEqn.H"
             endProfiling(energy);
 
             // --- Pressure corrector loop
             addProfiling(pressure, "ldnaFoam.pEqn");
-            #include "pressureStepFields.H"
-            while (pimple.correct())
-            {
-                #include "pEqn.H"
-            }
+            #include "pU/pEqn.H"
             endProfiling(pressure);
         }
 
         addProfiling(insertion, "ldnaFoam.insertMetal");
         metal.endStep(metalSourceDensity, mixture.h1());
-        #include "insertMetal.H"
+        #include "metal/insertMetal.H"
         endProfiling(insertion);
         balances.write(mixture, T, alpha1);
-        #include "write.H"
+        #include "time/write.H"
 
         runTime.printExecutionTime(Info);
     }

@@ -3,25 +3,30 @@
   Licence: GPL-3.0-or-later, as OpenFOAM's, on which it is built (LICENSE)
 \*---------------------------------------------------------------------------*/
 
-// Capillary time-step limit (Brackbill, Kothe & Zemach, J. Comput. Phys.
-// 100 (1992) 335-354): capillary waves of the explicit surface tension are
-// resolved only if dt < sqrt(rhoMean dx^3/(2 pi sigma)), dx the spacing
-// along the interface.  sigma is the one the momentum equation applies:
-// times the metal's liquid share of the face (a solid surface carries no
-// capillary force, so no capillary wave).  dx is taken on the faces that
-// cut the interface across, those whose normal lies within
-// arccos(1/sqrt(3)) = 54.7 deg of the interface plane (every direction has
-// an axis of a cubic cell that close): a cell thin across the interface,
-// as across the substrate surface, does not shorten its waves.
-// maxCapillaryNo (controlDict, default 1) scales the limit.
-scalar capillaryDeltaT = GREAT;
+#include "capillaryDeltaT.H"
+#include "checkedInput.H"
+#include "mathematicalConstants.H"
+#include "surfaceInterpolate.H"
+
+// * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
+
+Foam::scalar Foam::ldna::capillaryDeltaT
+(
+    const metalGasMixture& mixture,
+    const volScalarField& rho1,
+    const volScalarField& rho2,
+    const dictionary& controlDict
+)
 {
+    const fvMesh& mesh = rho1.mesh();
+    scalar capillaryDeltaT = GREAT;
+
     // Above 10 the limit no longer restrains the step: capillary waves
     // grow unresolved
     const scalar largestCapillaryNo = 10;
     const scalar maxCapillaryNo = ldna::getCheckedOrDefault<scalar>
     (
-        runTime.controlDict(), "maxCapillaryNo",
+        controlDict, "maxCapillaryNo",
         ldna::interval::openClosed(0, largestCapillaryNo), 1
     );
     const scalar largestNormalCos = 1/Foam::sqrt(3.0);
@@ -102,4 +107,8 @@ scalar capillaryDeltaT = GREAT;
 
     reduce(capillaryDeltaT, minOp<scalar>());
     capillaryDeltaT *= maxCapillaryNo;
+
+    return capillaryDeltaT;
 }
+
+// ************************************************************************* //

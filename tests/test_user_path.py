@@ -39,8 +39,9 @@ END_TIME = STATE_TIME + SPAN
 BEAD_AREA_TOLERANCE = 0.10
 
 #: What a second run on an installed, built machine must leave untouched
-BUILD_PRODUCTS = ["build/bin/ldnaFoam", "build/lib/libldnaMixture.so",
-                  "build/lib/libldnaModels.so", "build/lib/libldnaFunctionObjects.so",
+BUILD_PRODUCTS = ["build/bin/ldnaFoam", "build/lib/libldnaCore.so",
+                  "build/lib/libldnaMixture.so", "build/lib/libldnaModels.so",
+                  "build/lib/libldnaFunctionObjects.so",
                   "build/venv/.ldna-ready", "build/openfoam-env.sh"]
 
 

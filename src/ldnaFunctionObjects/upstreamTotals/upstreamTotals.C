@@ -4,7 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "upstreamTotals.H"
-#include "metalGasMixture.H"
+#include "conservedDensities.H"
+#include "volFields.H"
 #include "checkedInput.H"
 #include "functionObjectKeys.H"
 #include "physicalLimits.H"
@@ -117,14 +118,14 @@ bool Foam::functionObjects::upstreamTotals::execute()
 
 bool Foam::functionObjects::upstreamTotals::write()
 {
-    // The solver's mixture: its metal density and enthalpy, the ones its
-    // domain balance sums
-    const metalGasMixture& mixture =
-        lookupObject<metalGasMixture>("thermophysicalProperties");
+    // The solver's mixture: its metal mass and enthalpy densities, the ones
+    // its domain balance sums
+    const conservedDensities& mixture =
+        lookupObject<conservedDensities>("thermophysicalProperties");
 
     const scalarField& V = mesh_.V();
-    const scalarField& alpha1 = mixture.alpha1().primitiveField();
-    const scalarField& rho1 = mixture.rho1().primitiveField();
+    const tmp<volScalarField> tmetalMass(mixture.metalMassDensity());
+    const scalarField& metalMassDensity = tmetalMass().primitiveField();
     const tmp<volScalarField> tenthalpy(mixture.volumetricEnthalpy());
     const scalarField& enthalpy = tenthalpy().primitiveField();
 
@@ -132,7 +133,7 @@ bool Foam::functionObjects::upstreamTotals::write()
     scalar totalEnthalpy = 0;
     for (const label celli : upstreamCells_)
     {
-        metalMass += alpha1[celli]*rho1[celli]*V[celli];
+        metalMass += metalMassDensity[celli]*V[celli];
         totalEnthalpy += enthalpy[celli]*V[celli];
     }
     reduce(metalMass, sumOp<scalar>());

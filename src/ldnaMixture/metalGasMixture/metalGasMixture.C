@@ -541,6 +541,13 @@ Foam::metalGasMixture::volumetricEnthalpy() const
 }
 
 
+Foam::tmp<Foam::volScalarField>
+Foam::metalGasMixture::metalMassDensity() const
+{
+    return alpha1()*rho1_;
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::metalGasMixture::heatCapacity
 (
     const scalarField& m1,

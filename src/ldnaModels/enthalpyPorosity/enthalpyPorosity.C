@@ -179,7 +179,7 @@ void Foam::fv::enthalpyPorosity::addSup
     // full metal cell takes the Carman-Kozeny sink of its liquid fraction,
     // a cell whose solid is a sliver beside gas lets the gas and the liquid
     // through.  Linear in alpha, a cell with 0.1 % frozen metal was rigid
-    // and kept its gas under the deposit (docs/validation/bead-history.md)
+    // and kept its gas under the deposit (docs/journal/bead-2026-11.md)
     for (const label celli : cells_)
     {
         const scalar metal = min(max(alpha[celli], scalar(0)), scalar(1));

@@ -5,6 +5,7 @@
 
 #include "solidMetalFlux.H"
 #include "localMax.H"
+#include "optionsImplementing.H"
 #include "solidMetalMotion.H"
 #include "upwind.H"
 
@@ -12,7 +13,7 @@
 
 Foam::solidMetalFlux::solidMetalFlux
 (
-    const fv::optionList& options,
+    fv::optionList& options,
     const surfaceScalarField& phi,
     const volScalarField& alpha1,
     const volScalarField& liquidFraction
@@ -23,28 +24,21 @@ Foam::solidMetalFlux::solidMetalFlux
 {
     const fvMesh& mesh = phi.mesh();
 
-    label nMotions = 0;
-    vector Us(Zero);
-    forAll(options, optioni)
-    {
-        const solidMetalMotion* motion =
-            dynamic_cast<const solidMetalMotion*>(&options[optioni]);
-        if (motion)
-        {
-            Us = motion->solidMetalVelocity();
-            ++nMotions;
-        }
-    }
-    if (nMotions > 1)
+    const UPtrList<solidMetalMotion> motions
+    (
+        ldna::optionsImplementing<solidMetalMotion>(options)
+    );
+    if (motions.size() > 1)
     {
         FatalErrorInFunction
-            << nMotions << " fvOptions give the solid metal's velocity: list"
-            << " one (e.g. one enthalpyPorosity)" << exit(FatalError);
+            << motions.size() << " fvOptions give the solid metal's velocity:"
+            << " list one (e.g. one enthalpyPorosity)" << exit(FatalError);
     }
-    if (nMotions == 0)
+    if (motions.empty())
     {
         return;
     }
+    const vector Us = motions[0].solidMetalVelocity();
 
     surfaceScalarField phiSolid
     (

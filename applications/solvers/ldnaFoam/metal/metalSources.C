@@ -5,6 +5,7 @@
 
 #include "metalSources.H"
 #include "metalInsertion.H"
+#include "optionsImplementing.H"
 #include "fvMatrices.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -245,12 +246,13 @@ bool Foam::metalSources::insert
 )
 {
     bool inserted = false;
-    fv::optionList& options = fvOptions;
-    forAll(options, optioni)
+    for
+    (
+        metalInsertion& source
+      : ldna::optionsImplementing<metalInsertion>(fvOptions)
+    )
     {
-        metalInsertion* source =
-            dynamic_cast<metalInsertion*>(&options[optioni]);
-        if (source && source->insert(mixture, U))
+        if (source.insert(mixture, U))
         {
             inserted = true;
         }

@@ -70,7 +70,11 @@ BAD_INPUTS = [
      ["recondensation", "[0, 1)"]),
     ("unknown evaporation model", FV_OPTIONS, "evaporation",
      "{ type evaporation; model boiling; boilingTemperature 3090; latentHeat 6.5e6; }",
-     ["model", "boiling", "paper or hertzKnudsen"]),
+     ["'model'", "is boiling", "must be one of (paper hertzKnudsen)"]),
+    ("unknown laser profile", FV_OPTIONS, "laser",
+     "{ type laserHeatSource; absorptionModel gaussianSurface; power constant 100; "
+     "beamRadius 1e-3; position (0 0 0); profile flat; }",
+     ["'profile'", "is flat", "must be one of (gaussian topHat)"]),
     ("explicit metal fraction", FV_SOLUTION, f"{ALPHA_CONTROLS}/MULESCorr", "no",
      ["MULESCorr", "semi-implicitly", "(MULESCorr yes) only"]),
     ("zero limiter sweeps", FV_SOLUTION, f"{ALPHA_CONTROLS}/nLimiterIter", "0",

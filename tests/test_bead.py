@@ -181,7 +181,12 @@ def test_insertion_stops_on_unresolved_droplets(tmp_path: Path) -> None:
     assert result.returncode != 0
     text = result.output
     assert "FOAM FATAL IO ERROR" in text and "Segmentation" not in text
-    assert "at least 1.5 cells per radius" in text and "level 0 or finer" in text
+    assert "at least 1.5 cells per radius" in text
+    # The largest cell that inserts them: 1.5 cells on the radius of eq. 16,
+    # V_d = v_w pi R_w^2 / nu_d (the case's wires: 0.6 mm, 0.11583 m/s, 100 Hz)
+    radius = (3 * 0.11583 * 0.6e-3**2 / (4 * 100)) ** (1 / 3)
+    largest = float(text.split("cells of at most ")[1].split()[0])
+    assert abs(largest / (radius / 1.5) - 1) < 1e-5
     assert "wireDroplets" in text
 
 

@@ -93,6 +93,25 @@ Foam::label Foam::ldna::editDistance(const word& a, const word& b)
 }
 
 
+void Foam::ldna::badChoice
+(
+    const dictionary& dict,
+    const word& key,
+    const word& value,
+    const wordList& allowed
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "Entry '" << key << "' in " << dict.name() << " is " << value
+        << ": it must be one of (";
+    forAll(allowed, i)
+    {
+        FatalIOError << (i ? " " : "") << allowed[i];
+    }
+    FatalIOError << ")" << exit(FatalIOError);
+}
+
+
 void Foam::ldna::checkKeys(const dictionary& dict, const wordList& known)
 {
     for (const entry& e : dict)

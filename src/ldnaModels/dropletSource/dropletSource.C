@@ -26,6 +26,13 @@ namespace fv
     defineTypeNameAndDebug(dropletSource, 0);
     addToRunTimeSelectionTable(option, dropletSource, dictionary);
 }
+
+const Foam::Enum<Foam::fv::dropletSource::transferMode>
+Foam::fv::dropletSource::transferModeNames
+({
+    { transferMode::gaussian, "gaussian" },
+    { transferMode::insertion, "insertion" },
+});
 }
 
 // The cut radius of an inserted sphere lies between R and this multiple of
@@ -135,14 +142,12 @@ void Foam::fv::dropletSource::readIrregularity()
 
 void Foam::fv::dropletSource::readMode()
 {
-    const word mode = coeffs_.lookupOrDefault<word>("mode", "gaussian");
-    if (mode != "insertion" && mode != "gaussian")
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'mode' must be insertion or gaussian, not " << mode
-            << exit(FatalIOError);
-    }
-    insertion_ = (mode == "insertion");
+    insertion_ =
+        ldna::getChoiceOrDefault
+        (
+            coeffs_, "mode", transferModeNames, transferMode::gaussian
+        )
+     == transferMode::insertion;
 
     alphaName_ = coeffs_.lookupOrDefault<word>("alpha", "alpha.metal");
     UName_ = coeffs_.lookupOrDefault<word>("U", "U");
@@ -156,10 +161,10 @@ void Foam::fv::dropletSource::readMode()
     }
     else
     {
-        fieldNames_.setSize(3);
-        fieldNames_[0] = alphaName_;
-        fieldNames_[1] = UName_;
-        fieldNames_[2] = TName_;
+        fieldNames_.setSize(nSourceFields);
+        fieldNames_[alphaFieldi] = alphaName_;
+        fieldNames_[UFieldi] = UName_;
+        fieldNames_[TFieldi] = TName_;
     }
     applied_.setSize(fieldNames_.size(), false);
 }
@@ -470,14 +475,6 @@ void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
     const scalar R = wire.dropletRadius;
     const scalar cellsPerRadius = R/cellSize;
 
-    // Process-zone cells of the LDNA template: 0.45 mm/2^level
-    // (cases/ldna/system/caseParameters)
-    const scalar templateLevel0Cell = 0.45e-3;
-    auto levelFor = [&](const scalar perRadius)
-    {
-        return max(label(0), label(ceil(log2(templateLevel0Cell*perRadius/R))));
-    };
-
     if (insertion_ && !(cellsPerRadius >= minCellsPerRadius))
     {
         FatalIOErrorInFunction(coeffs_)
@@ -486,8 +483,8 @@ void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
             << " m at their source " << wire.position << ": inserting them"
             << " as spheres needs at least " << minCellsPerRadius
             << " cells per radius, cells of at most "
-            << R/minCellsPerRadius << " m (in the LDNA template: level "
-            << levelFor(minCellsPerRadius) << " or finer)"
+            << R/minCellsPerRadius << " m (the LDNA template's levels and"
+            << " their cells: ldna mesh-levels)"
             << exit(FatalIOError);
     }
     if (!(cellsPerRadius >= resolvedCellsPerRadius))
@@ -498,8 +495,8 @@ void Foam::fv::dropletSource::checkResolution(const wireStream& wire) const
             << " m at their source: the droplet shape is under-resolved"
             << " (fewer than " << resolvedCellsPerRadius
             << " cells per radius; cells of at most "
-            << R/resolvedCellsPerRadius << " m resolve it, in the LDNA"
-            << " template level " << levelFor(resolvedCellsPerRadius) << ")"
+            << R/resolvedCellsPerRadius << " m resolve it: ldna mesh-levels"
+            << " lists the LDNA template's levels and their cells)"
             << endl;
     }
 }
@@ -965,12 +962,12 @@ void Foam::fv::dropletSource::addSup
 {
     update();
 
-    if (fieldi == 0)
+    if (fieldi == alphaFieldi)
     {
         // Metal mass [kg/m3/s]
         eqn += cellSource(eqn, name_ + ":massSource", massSource_);
     }
-    else if (fieldi == 2)
+    else if (fieldi == TFieldi)
     {
         // The solver lets added metal arrive at the enthalpy h1 of the cell
         // at the current iterate; the droplet brings h1(T_d): the difference

@@ -22,6 +22,13 @@ namespace fv
     defineTypeNameAndDebug(evaporation, 0);
     addToRunTimeSelectionTable(option, evaporation, dictionary);
 }
+
+const Foam::Enum<Foam::fv::evaporation::evaporationModel>
+Foam::fv::evaporation::evaporationModelNames
+({
+    { evaporationModel::paper, "paper" },
+    { evaporationModel::hertzKnudsen, "hertzKnudsen" },
+});
 }
 
 namespace
@@ -51,21 +58,7 @@ void Foam::fv::evaporation::readCoeffs()
         }
     );
 
-    const word model(coeffs_.get<word>("model"));
-    if (model == "paper")
-    {
-        model_ = evaporationModel::paper;
-    }
-    else if (model == "hertzKnudsen")
-    {
-        model_ = evaporationModel::hertzKnudsen;
-    }
-    else
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "model " << model << " must be paper or hertzKnudsen"
-            << exit(FatalIOError);
-    }
+    model_ = ldna::getChoice(coeffs_, "model", evaporationModelNames);
 
     using ldna::interval;
 
@@ -116,9 +109,9 @@ void Foam::fv::evaporation::readCoeffs()
     TName_ = coeffs_.lookupOrDefault<word>("T", "T");
     log_ = coeffs_.lookupOrDefault<bool>("log", true);
 
-    fieldNames_.setSize(2);
-    fieldNames_[0] = alphaName_;
-    fieldNames_[1] = TName_;
+    fieldNames_.setSize(nSourceFields);
+    fieldNames_[alphaFieldi] = alphaName_;
+    fieldNames_[TFieldi] = TName_;
     applied_.setSize(fieldNames_.size(), false);
 
     if (recoilPressure_ && !recoilPressureField_.valid())
@@ -323,12 +316,12 @@ void Foam::fv::evaporation::addSup
 {
     update();
 
-    if (fieldi == 0)
+    if (fieldi == alphaFieldi)
     {
         // Metal mass [kg/m3/s]
         eqn -= cellSource(eqn, name_ + ":massSink", massRate_);
     }
-    else if (fieldi == 1)
+    else if (fieldi == TFieldi)
     {
         // Latent heat [W/m3]
         eqn -= cellSource(eqn, name_ + ":heatSink", heatSink_);

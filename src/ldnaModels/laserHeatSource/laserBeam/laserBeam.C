@@ -39,6 +39,14 @@ const Foam::scalar gaussianExtent = 2;
 } // End anonymous namespace
 
 
+const Foam::Enum<Foam::laserBeam::beamProfile>
+Foam::laserBeam::beamProfileNames
+({
+    { beamProfile::gaussian, "gaussian" },
+    { beamProfile::topHat, "topHat" },
+});
+
+
 const Foam::wordList Foam::laserBeam::keys
 ({
     "power", "beamRadius", "profile", "position", "offset", "oscillation",
@@ -81,14 +89,12 @@ void Foam::laserBeam::read(const dictionary& dict)
         dict, "beamRadius", interval::openClosed(0, maxLength)
     );
 
-    const word profile(dict.lookupOrDefault<word>("profile", "gaussian"));
-    if (profile != "gaussian" && profile != "topHat")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'profile' in " << dict.name() << " is " << profile
-            << ": it must be gaussian or topHat" << exit(FatalIOError);
-    }
-    topHat_ = (profile == "topHat");
+    topHat_ =
+        ldna::getChoiceOrDefault
+        (
+            dict, "profile", beamProfileNames, beamProfile::gaussian
+        )
+     == beamProfile::topHat;
 
     position_ = dict.get<point>("position");
     for (label i = 0; i < vector::nComponents; ++i)

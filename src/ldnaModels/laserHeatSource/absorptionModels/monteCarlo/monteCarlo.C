@@ -19,6 +19,13 @@ namespace laserAbsorptionModels
 }
 }
 
+const Foam::Enum<Foam::laserAbsorptionModels::monteCarlo::scattering>
+Foam::laserAbsorptionModels::monteCarlo::scatteringNames
+({
+    { scattering::specular, "specular" },
+    { scattering::diffuse, "diffuse" },
+});
+
 
 namespace
 {
@@ -81,18 +88,12 @@ void Foam::laserAbsorptionModels::monteCarlo::read(const dictionary& dict)
         defaultMaxEvents
     );
 
-    const word scattering
-    (
-        coeffs_.lookupOrDefault<word>("scattering", "specular")
-    );
-    if (scattering != "specular" && scattering != "diffuse")
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry 'scattering' in " << coeffs_.name() << " is "
-            << scattering << ": it must be specular or diffuse"
-            << exit(FatalIOError);
-    }
-    specular_ = (scattering == "specular");
+    specular_ =
+        ldna::getChoiceOrDefault
+        (
+            coeffs_, "scattering", scatteringNames, scattering::specular
+        )
+     == scattering::specular;
 }
 
 

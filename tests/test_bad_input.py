@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from conftest import assert_named_error
+from solver_cases import assert_named_error
 from ldna.case import Case
 
 

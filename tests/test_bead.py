@@ -23,7 +23,7 @@ import pytest
 
 from foamlib import FoamFile
 
-from conftest import prepare_test_case
+from solver_cases import prepare_test_case
 from ldna.balance import WIRE_COLUMNS, wire_table
 from ldna.case import Case
 

@@ -12,7 +12,7 @@ import shutil
 import numpy as np
 import pytest
 
-from conftest import TEMPLATE
+from solver_cases import TEMPLATE
 from ldna.case import Case
 
 

@@ -27,7 +27,7 @@ from ldna.case import Case
 from ldna.post import (POST_FUNCTION, BeadMetrics, fusion_temperature,
                        function_object_metrics, read_fusion_line)
 
-from conftest import TEMPLATE
+from solver_cases import TEMPLATE
 
 #: Required accuracy (issue: a fusion zone a fraction of a cell deep)
 DEPTH_TOLERANCE = 0.05e-3

@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import prepare_test_case
+from solver_cases import prepare_test_case
 from ldna.case import Case
 
 #: The case's source [W], beam radius [m], material and speed

@@ -19,7 +19,7 @@ from typing import Callable
 import numpy as np
 import pytest
 
-from conftest import TEST_CASES
+from solver_cases import TEST_CASES
 from ldna.case import Case
 
 #: Beam power [W], radius [m] and the slab's absorptivity in these tests

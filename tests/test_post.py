@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import prepare_test_case
+from solver_cases import prepare_test_case
 from ldna.case import Case
 from ldna.material import Metal
 from ldna.post import (BeadMetrics, bead_not_yet_there, configured_bead_section,

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import TEMPLATE
+from solver_cases import TEMPLATE
 from ldna.foamcase import run
 from ldna.foamdict import read_scalars
 from ldna.study import Parameter, make_members

@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import CRASHES, TEMPLATE, assert_named_error, prepare_test_case
+from solver_cases import CRASHES, TEMPLATE, assert_named_error, prepare_test_case
 from ldna.balance import wire_table
 from ldna.case import Case
 from ldna.material import Metal

@@ -1,0 +1,79 @@
+"""The small cases the solver tests run, and the check they share.
+
+``prepare_test_case`` copies one of tests/cases and completes it with the
+LDNA template's numerics (and, if asked, its material data);
+``meshed_test_case`` also meshes it as the case needs; ``assert_named_error``
+checks that a bad input stops with a named FatalIOError and no crash.
+"""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+from foamlib import FoamFile
+
+from ldna.case import Case
+
+PROJECT_DIR = Path(__file__).resolve().parents[1]
+
+TEST_CASES = Path(__file__).resolve().parent / "cases"
+TEMPLATE = PROJECT_DIR / "cases" / "ldna"
+
+
+def prepare_test_case(name: str, destination: Path, material_from_template: bool) -> Case:
+    """Copy tests/cases/<name> and add the template's fvSchemes and fvSolution.
+
+    With ``material_from_template`` the template's thermophysicalProperties
+    are used as well, with one metal: its filler, 316L (the template's
+    substrate metal left out), and argon.
+    """
+    case = Case.copy_of(TEST_CASES / name, destination / name)
+    for file in ("fvSchemes", "fvSolution"):
+        shutil.copy(TEMPLATE / "system" / file, case / "system" / file)
+    if material_from_template:
+        # A case whose constant/ would hold nothing else has none in git
+        (case / "constant").mkdir(exist_ok=True)
+        properties = case / "constant" / "thermophysicalProperties"
+        shutil.copy(TEMPLATE / "constant" / "thermophysicalProperties", properties)
+        del FoamFile(properties)["substrate"]
+    return case
+
+
+#: Per test case: whether it takes the template's material data, and the
+#: applications that set it up after blockMesh
+MESHING: dict[str, tuple[bool, tuple[str, ...]]] = {
+    "energyBox": (True, ("topoSet", "setFields")),
+    "laserSlab": (True, ("setFields",)),
+    "marangoniLayer": (False, ("setFields",)),
+    "staticDroplet": (False, ("setAlphaField",)),
+}
+
+
+def meshed_test_case(name: str, destination: Path) -> Case:
+    """tests/cases/<name>, prepared and meshed (not yet run)."""
+    material_from_template, setup = MESHING[name]
+    case = prepare_test_case(name, destination, material_from_template)
+    case.run("blockMesh")
+    for application in setup:
+        case.run(application)
+    return case
+
+
+#: What a crash, not a named error, leaves in the output
+CRASHES = ("sigSegv", "Segmentation fault", "sigFpe", "nan")
+
+
+def assert_named_error(case: Case, expected: list[str],
+                       crashes: tuple[str, ...] = CRASHES) -> None:
+    """ldnaFoam stops on the case with a FOAM FATAL IO ERROR whose message
+    holds every text of ``expected``, and does not crash."""
+    result = case.run("ldnaFoam", check=False)
+    output = result.output
+    error = output[output.find("FOAM FATAL"):]
+    print(error[:600])
+    assert result.returncode != 0
+    assert "FOAM FATAL IO ERROR" in output
+    for text in expected:
+        assert text in error, f"'{text}' missing from the error message"
+    for crash in crashes:
+        assert crash not in output

@@ -15,8 +15,68 @@
 // (relative to the cell length)
 static const Foam::scalar rowHeightTolerance = 1e-3;
 
+// Relative difference of two slice areas taken as round-off: the bead of a
+// uniform cross-section has equal areas in all its slices
+static const Foam::scalar sliceAreaTolerance = 1e-6;
+
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::functionObjects::meltPoolMetrics::slice(const scalar w) const
+{
+    const label i = label(std::floor((w - sliceOrigin_)/sliceLength_));
+    return min(max(i, 0), nSlices_ - 1);
+}
+
+
+Foam::labelPair Foam::functionObjects::meltPoolMetrics::slices
+(
+    const boundBox& cellBounds
+) const
+{
+    // Slice i's centre plane lies at origin + (i + 1/2) L: inside the cell
+    // for i from ceil(min/L - 1/2) to ceil(max/L - 1/2) - 1
+    const auto first = [&](const scalar w)
+    {
+        return label(std::ceil((w - sliceOrigin_)/sliceLength_ - 0.5));
+    };
+    return labelPair
+    (
+        max(first(cellBounds.min().x()), 0),
+        min(first(cellBounds.max().x()) - 1, nSlices_ - 1)
+    );
+}
+
+
+Foam::scalar
+Foam::functionObjects::meltPoolMetrics::sliceCentre(const label i) const
+{
+    return sliceOrigin_ + (i + 0.5)*sliceLength_;
+}
+
+
+Foam::label Foam::functionObjects::meltPoolMetrics::largestSlice
+(
+    const scalarList& areas
+) const
+{
+    // Of slices equal to round-off (a uniform bead), the most downstream
+    const scalar largest = max(areas);
+    label i = areas.size() - 1;
+    while (i > 0 && areas[i] < (1 - sliceAreaTolerance)*largest)
+    {
+        --i;
+    }
+    return i;
+}
+
+
+Foam::point
+Foam::functionObjects::meltPoolMetrics::weldFrame(const point& p) const
+{
+    return point(p & weldDir_, p & transverseDir_, p & verticalDir_);
+}
+
 
 template<class LinkOp>
 void Foam::functionObjects::meltPoolMetrics::forAllLinks

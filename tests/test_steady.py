@@ -105,6 +105,20 @@ def test_any_growing_metric_is_not_steady(metric: str) -> None:
 
 
 @pytest.mark.unit
+def test_a_longer_shortest_window_is_whole_periods_and_needs_four() -> None:
+    """``ldna steady --min-window S``: windows of whole ripple periods of at
+    least S, four of them after the bead's arrival."""
+    shortest = 4 * PERIOD
+    verdict = judge(*bead(13.5), 0.0, min_window=shortest)
+    periods = verdict.window / PERIOD
+    assert verdict.window >= shortest
+    assert periods == pytest.approx(round(periods), rel=0.02)
+    assert verdict.steady, verdict.reason
+    short = judge(*bead(3 * shortest), 0.0, min_window=shortest)
+    assert not short.steady and short.reason.startswith("too short")
+
+
+@pytest.mark.unit
 def test_a_small_metric_is_read_to_the_beads_size() -> None:
     """A 0.3 mm penetration drifting by 5 um a window (1.6 % of itself, 0.17 %
     of the 3 mm bead): as steady as a macro-section reads."""

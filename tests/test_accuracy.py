@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from ldna import accuracy
+from ldna.dev import accuracy
 from ldna.foamcase import PROJECT_DIR
 from ldna.foamdict import read_scalars
 

@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from ldna.benchmark import TEMPLATE, SolverCosts, StepCost, _monte_carlo_laser
+from ldna.dev.benchmark import TEMPLATE, SolverCosts, StepCost, _monte_carlo_laser
 
 
 @pytest.mark.unit

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from ldna import scaling
+from ldna.dev import scaling
 from ldna.case import Case
 
 #: Cells of the energy box along x, y and z (tests/cases/energyBox)

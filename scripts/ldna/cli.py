@@ -10,7 +10,8 @@ import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
-from . import benchmark, meshing, state
+from . import meshing, state
+from .dev import benchmark
 
 
 def _mesh_levels(args: argparse.Namespace) -> int:
@@ -36,7 +37,7 @@ def _bench(args: argparse.Namespace) -> int:
 
 
 def _scaling(args: argparse.Namespace) -> int:
-    from . import scaling
+    from .dev import scaling
 
     if not all(n >= 1 and n == int(n) for n in args.ranks):
         raise SystemExit("ldna scaling: --ranks must be whole numbers >= 1")
@@ -82,7 +83,7 @@ def _study(args: argparse.Namespace) -> int:
 
 
 def _accuracy(args: argparse.Namespace) -> int:
-    from . import accuracy
+    from .dev import accuracy
 
     scene = None if args.scene == "auto" else accuracy.SCENES[args.scene]
     if args.band:
@@ -158,7 +159,7 @@ def _steady_start(args: argparse.Namespace) -> int:
 
 
 def _bead_report(args: argparse.Namespace) -> int:
-    from . import validation
+    from .dev import validation
 
     figures = validation.bead_report(Path(args.case), Path(args.output), args.section,
                                      args.cpu_seconds)

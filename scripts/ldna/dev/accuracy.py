@@ -28,13 +28,13 @@ from typing import Protocol
 
 import numpy as np
 
-from . import meshing
-from .case import Case
-from . import foamcase
-from .foamcase import BALANCES, PROJECT_DIR, RUN_FUNCTIONS
-from .foamdict import read_scalars
-from .steady import SCALES as STEADY_SCALES
-from .stefan import NeumannSolution, front_position
+from .. import meshing
+from ..case import Case
+from .. import foamcase
+from ..foamcase import BALANCES, PROJECT_DIR, RUN_FUNCTIONS
+from ..foamdict import read_scalars
+from ..steady import SCALES as STEADY_SCALES
+from ..stefan import NeumannSolution, front_position
 
 
 class Scene(Protocol):
@@ -123,7 +123,7 @@ class LdnaScene:
         case.run("ldnaFoam", member.n_procs)
 
     def outputs(self, case: Case) -> dict[str, float]:
-        from .post import BeadMetrics, read_function_object_metrics
+        from ..post import BeadMetrics, read_function_object_metrics
 
         last = dict(zip(("time",) + BeadMetrics.FUNCTION_OBJECT_COLUMNS,
                         read_function_object_metrics(case)[-1]))
@@ -144,7 +144,7 @@ def largest_fraction_in_flight(case: Path) -> float:
     output of the study).  Droplets fly about 9 of every 10 ms, so one is
     almost always in the air; the column is the middle 80 % of the flight.
     """
-    from .post import read_case
+    from ..post import read_case
 
     grid = read_case(case)
     z = np.asarray(grid.cell_centers().points)[:, 2]
@@ -186,7 +186,7 @@ class BeadScene(LdnaScene):
         return self.mesh_level(case, level)
 
     def run(self, case: Case, member: "Member") -> None:
-        from . import post, steady
+        from .. import post, steady
 
         control = "system/controlDict"
         # Every stretch's end is written, so that a stopped study resumes
@@ -221,7 +221,7 @@ class BeadScene(LdnaScene):
                                                   balance=steady.DomainBalance.of(case.path))
 
     def outputs(self, case: Case) -> dict[str, float]:
-        from . import post, steady
+        from .. import post, steady
 
         verdict = steady.case_steadiness(case.path)
         values = {name: verdict.metrics[name].mean for name in self.outputs_meta

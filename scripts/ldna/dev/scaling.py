@@ -27,8 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .case import Case
-from .foamcase import latest_run_table, read_internal_field
+from ..case import Case
+from ..foamcase import latest_run_table, read_internal_field
 
 #: An InfiniBand interconnect: the one-way MPI latency of a zero-byte
 #: message and the bandwidth between 8 and 16 kB messages, from the

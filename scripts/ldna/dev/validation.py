@@ -36,12 +36,12 @@ from pathlib import Path
 
 import numpy as np
 
-from . import post, steady
-from .balance import evaporation_table, patch_flows
-from .material import Metal
-from .case import Case
-from .foamcase import simulated_seconds
-from .meshing import cell_count
+from .. import post, steady
+from ..balance import evaporation_table, patch_flows
+from ..material import Metal
+from ..case import Case
+from ..foamcase import simulated_seconds
+from ..meshing import cell_count
 
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
 BEAD_AREA_COLUMN = 1 + post.BeadMetrics.FUNCTION_OBJECT_COLUMNS.index("bead_area")

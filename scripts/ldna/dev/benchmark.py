@@ -27,9 +27,9 @@ from pathlib import Path
 import numpy as np
 from foamlib import FoamFieldFile
 
-from .case import Case
-from .foamcase import PROJECT_DIR
-from .foamdict import block_names, keep_blocks, read_scalars, remove_blocks
+from ..case import Case
+from ..foamcase import PROJECT_DIR
+from ..foamdict import block_names, keep_blocks, read_scalars, remove_blocks
 
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
 

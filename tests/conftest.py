@@ -1,12 +1,13 @@
-"""Fixtures of the ldnaFoam test suite: real cases run by the real solver.
+"""The ldnaFoam test suite's two tiers, by folder.
 
-Each fixture copies a small case into a temporary directory (an
-``ldna.case.Case``), completes it
-with the numerics (and, where the test does not set its own, the material
-data) of the LDNA template so that the tests exercise what users run, and
-runs OpenFOAM's applications on it.  Tests skip nothing: without a built
-ldnaFoam a session that selects solver tests fails; the shared helpers
-are in solver_cases.py.
+- ``tests/unit``: the Python tools alone on synthetic tables and fields, in
+  seconds, on a machine without a build (``pytest -m unit``);
+- ``tests/solver``: the real solver on small real cases (its fixtures are in
+  tests/solver/conftest.py, the shared helpers in solver_cases.py and
+  userpath.py).
+
+Tests skip nothing: without a built ldnaFoam a session that selects solver
+tests fails at once.
 """
 from __future__ import annotations
 
@@ -14,15 +15,17 @@ from pathlib import Path
 
 import pytest
 
-from ldna.case import Case
-from solver_cases import PROJECT_DIR, TEMPLATE, meshed_test_case
+from solver_cases import PROJECT_DIR
+
+#: The unit tier's folder
+UNIT_DIR = Path(__file__).resolve().parent / "unit"
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The two tiers: a test not marked ``unit`` runs the solver."""
+    """The tier of each test is its folder's (``-m unit``, ``-m solver``)."""
     for item in items:
-        if item.get_closest_marker("unit") is None:
-            item.add_marker(pytest.mark.solver)
+        unit = UNIT_DIR in Path(item.path).resolve().parents
+        item.add_marker(pytest.mark.unit if unit else pytest.mark.solver)
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
@@ -31,44 +34,3 @@ def pytest_collection_finish(session: pytest.Session) -> None:
     needs_solver = any(item.get_closest_marker("solver") for item in session.items)
     if needs_solver and not (PROJECT_DIR / "build" / "bin" / "ldnaFoam").exists():
         raise pytest.UsageError("ldnaFoam is not built: run ./Allwmake (or bin/ldna-test)")
-
-
-@pytest.fixture
-def stefan_case(tmp_path: Path) -> Case:
-    """The meshed 1D melting bar of cases/stefanMelting (not yet run)."""
-    case = Case.copy_of(PROJECT_DIR / "cases" / "stefanMelting", tmp_path / "stefanMelting")
-    case.run("blockMesh")
-    return case
-
-
-@pytest.fixture
-def energy_box_case(tmp_path: Path) -> Case:
-    """The closed box, metal below argon, with its heater zone."""
-    return meshed_test_case("energyBox", tmp_path)
-
-
-@pytest.fixture
-def laser_slab_case(tmp_path: Path) -> Case:
-    """The box with a flat 316L slab under argon, for the laser tests."""
-    return meshed_test_case("laserSlab", tmp_path)
-
-
-@pytest.fixture
-def marangoni_layer_case(tmp_path: Path) -> Case:
-    """The 2D liquid layer between a hot and a cold wall, no gravity."""
-    return meshed_test_case("marangoniLayer", tmp_path)
-
-
-@pytest.fixture
-def static_droplet_case(tmp_path: Path) -> Case:
-    """The 2D box with a liquid cylinder of exact cut-cell fractions."""
-    return meshed_test_case("staticDroplet", tmp_path)
-
-
-@pytest.fixture
-def ldna_case(tmp_path: Path) -> Case:
-    """A copy of the LDNA template at resolution level 0, ASCII output (not yet meshed)."""
-    case = Case.copy_of(TEMPLATE, tmp_path / "ldna")
-    case.set("system/caseParameters", "level", "0")
-    case.set("system/controlDict", "writeFormat", "ascii")
-    return case

@@ -13,7 +13,7 @@ import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
-from ldna.foamcase import PROJECT_DIR
+from ldna.case import PROJECT_DIR
 
 #: The OpenFOAM environment bin/ldna-install writes (a sourced OpenFOAM)
 OPENFOAM_ENV = PROJECT_DIR / "build" / "openfoam-env.sh"

@@ -3,23 +3,27 @@
 ``Case`` is what the tools (``ldna bench``, ``study``, ``accuracy``) do to a
 case, in one place, the way foamlib's ``FoamCase`` does for OpenFOAM
 cases.  Fields are read and written with foamlib.  Dictionaries are edited
-as text where foamlib 1.7.10 cannot parse them: it stops at the v1912
-``#eval{ ... }`` entries of the template's ``constant/fvOptions``,
-``system/blockMeshDict`` and ``system/controlDict`` and at
-``#include "meshLevels/level$level"`` in ``system/snappyHexMeshDict``
-(measured on cases/ldna); top-level entries are then replaced in place,
-keeping comments and macros, and scoped ones (``laser/absorptionModel``)
-are set with OpenFOAM's ``foamDictionary``.
+as text (``ldna.foamdict``), keeping comments, ``#include`` and ``#eval``:
+foamlib 1.7.10 stops at the v1912 ``#eval{ ... }`` entries of the
+template's ``constant/fvOptions``, ``system/blockMeshDict`` and
+``system/controlDict`` (measured on cases/ldna), and OpenFOAM's
+``foamDictionary -set`` writes the file with every macro expanded.
 """
 from __future__ import annotations
 
-import shlex
+import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from . import foamcase, foamdict, meshing
+from . import _foamcase as foamcase
+from . import foamdict, meshing
+# The project's places, for scripts and tests (the rest of _foamcase is private)
+from ._foamcase import BALANCES, ENV_SCRIPT, PROJECT_DIR, RUN_FUNCTIONS, TIME_INFO, RunResult
+
+__all__ = ["BALANCES", "Case", "ENV_SCRIPT", "PROJECT_DIR", "RUN_FUNCTIONS", "RunResult",
+           "TIME_INFO"]
 
 
 @dataclass(frozen=True)
@@ -54,21 +58,15 @@ class Case:
 
     # Dictionaries
 
-    def set(self, file: str, entry: str, value: str) -> None:
-        """Set ``entry`` of ``file`` (relative to the case) to ``value``.
+    def set(self, file: str, entry: str, value: str, create: bool = False) -> None:
+        """Set the (scoped: ``coeffs/n``) ``entry`` of ``file`` (relative to
+        the case) to ``value``, editing the text in place.  An entry the file
+        does not have is a KeyError, unless ``create`` asks to add it."""
+        foamdict.set_entry(self.path / file, entry, value, create)
 
-        A top-level entry that the file has is replaced in place; a scoped
-        entry (``block/entry``) or a new one is set with foamDictionary,
-        which writes the file with its macros expanded.
-        """
-        if "/" not in entry:
-            try:
-                foamdict.set_entry(self.path / file, entry, value)
-                return
-            except KeyError:
-                pass
-        self.run(f"foamDictionary -entry {shlex.quote(entry)} -set {shlex.quote(value)} "
-                 f"{shlex.quote(file)}", log_name="foamDictionary")
+    def written(self, file: str, entry: str) -> str:
+        """The value of a (scoped) entry as written in the file (macros unexpanded)."""
+        return foamdict.entry_text(self.path / file, entry)
 
     def value(self, file: str, entry: str) -> str:
         """The value of a (scoped) entry as OpenFOAM reads it."""
@@ -94,9 +92,12 @@ class Case:
     def set_ranks(self, n_procs: int) -> None:
         """Decompose into ``n_procs`` subdomains: their number and the
         hierarchical split (``n_procs`` along the weld), which decomposePar
-        requires to agree."""
-        self.set("system/decomposeParDict", "numberOfSubdomains", str(n_procs))
-        self.set("system/decomposeParDict", "coeffs/n", f"({n_procs} 1 1)")
+        requires to agree; a split written from the number
+        (``($numberOfSubdomains 1 1)``, the template's) follows it."""
+        parameters = "system/decomposeParDict"
+        self.set(parameters, "numberOfSubdomains", str(n_procs))
+        if "$numberOfSubdomains" not in self.written(parameters, "coeffs/n"):
+            self.set(parameters, "coeffs/n", f"({n_procs} 1 1)")
 
     def decompose(self, n_procs: int | None = None) -> None:
         """decomposePar (into ``n_procs`` subdomains, if given)."""
@@ -105,7 +106,7 @@ class Case:
         self.run("decomposePar -force", log_name="decomposePar")
 
     def run(self, command: str = "ldnaFoam", n_procs: int = 1, log_name: str | None = None,
-            check: bool = True, timeout: float | None = None) -> foamcase.RunResult:
+            check: bool = True, timeout: float | None = None) -> RunResult:
         """Run ``command`` in the case, on ``n_procs`` MPI ranks if more than one
         (the case must be decomposed); output in ``log.<log_name>``."""
         if n_procs > 1:
@@ -113,6 +114,11 @@ class Case:
                                          check=check)
         return foamcase.run(self.path, command, log_name=log_name, check=check,
                             timeout=timeout)
+
+    def start(self, command: str, log_name: str, append: bool = False) -> subprocess.Popen:
+        """Start ``command`` in the case and return at once (a member of a
+        study runs beside others); output in ``log.<log_name>``."""
+        return foamcase.start(self.path, command, log_name, append)
 
     def reconstruct(self) -> None:
         """reconstructPar of the latest time."""
@@ -153,6 +159,18 @@ class Case:
         sources of one kind: ``droplets``, ``evaporation``, ...)."""
         return foamcase.find_tables(self.path, file)
 
+    def table_files(self, name: str, file: str) -> list[Path]:
+        """Every ``<file>.dat`` of ``postProcessing/<name>``: one per run, oldest first."""
+        return foamcase.table_files(self.path, name, file)
+
+    def clock_seconds(self) -> float:
+        """Wall-clock time [s] of all runs (timeInfo)."""
+        return foamcase.clock_seconds(self.path)
+
+    def simulated_seconds(self) -> float:
+        """Process time the runs simulated [s], from each run's start (timeInfo)."""
+        return foamcase.simulated_seconds(self.path)
+
     def cpu_seconds(self) -> float:
         """CPU time of the master rank [s] of all runs (timeInfo)."""
         return foamcase.cpu_seconds(self.path)
@@ -168,7 +186,7 @@ class Case:
     def seconds_per_step(self) -> float:
         """Mean CPU time per step of the latest run (timeInfo), without the
         first step (start-up)."""
-        times = self.latest_table(*foamcase.TIME_INFO)["cpuTime"]
+        times = self.latest_table(*TIME_INFO)["cpuTime"]
         if len(times) < 3:
             raise RuntimeError(f"too few steps in {self.path}")
         return float(np.diff(times)[1:].mean())

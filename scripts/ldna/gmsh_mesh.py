@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .foamcase import run
-from .foamdict import read_scalars
+from .case import Case
+from .foamdict import read_scalars, set_entry
 from .meshing import mesh_counts
 
 #: Patch types of the template (gmshToFoam makes every patch a 'patch')
@@ -99,8 +99,7 @@ def gmsh_mesh(case: Path, level: float | None = None) -> int:
         level = read_scalars(case / "system" / "caseParameters")["level"]
     msh_file = case / "ldna.msh"
     n_cells = build_msh(case, level, msh_file)
-    run(case, f"gmshToFoam {msh_file.name}", log_name="gmshToFoam")
+    Case(case).run(f"gmshToFoam {msh_file.name}", log_name="gmshToFoam")
     for patch in WALL_PATCHES:
-        run(case, f"foamDictionary -entry entry0/{patch}/type -set wall "
-                  "constant/polyMesh/boundary", log_name="foamDictionary.boundary")
+        set_entry(case / "constant" / "polyMesh" / "boundary", f"{patch}/type", "wall")
     return n_cells

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .foamcase import dictionary_value, latest_run_table
+from .case import Case
 
 #: The solver's table of the metal's properties (postProcessing/<name>/*/<file>.dat)
 PROPERTY_TABLE = ("metalGasMixture", "metal")
@@ -28,7 +28,7 @@ SUBSTRATE = "substrate"
 def two_metals(case: Path | str) -> bool:
     """Whether the substrate has its own metal (a ``substrate`` dictionary)."""
     try:
-        dictionary_value(Path(case), "constant/thermophysicalProperties", f"{SUBSTRATE}/solidus")
+        Case(case).value("constant/thermophysicalProperties", f"{SUBSTRATE}/solidus")
     except KeyError:
         return False
     return True
@@ -54,7 +54,7 @@ class Metal:
         """The filler metal of ``case/constant/thermophysicalProperties``
         (``name`` "metal"), or the substrate's own (``name`` "substrate")."""
         def entry(key: str) -> str:
-            return dictionary_value(case, "constant/thermophysicalProperties", f"{name}/{key}")
+            return Case(case).value("constant/thermophysicalProperties", f"{name}/{key}")
 
         try:
             model = entry("densityModel")
@@ -73,7 +73,7 @@ class Metal:
     @cached_property
     def table(self) -> np.ndarray:
         """The solver's property table of its latest run (the solver must have started)."""
-        return latest_run_table(self.case, PROPERTY_TABLE[0], self.name)
+        return Case(self.case).latest_table(PROPERTY_TABLE[0], self.name)
 
     def _at(self, column: str, T: float) -> float:
         return float(np.interp(T, self.table["T"], self.table[column]))

@@ -251,17 +251,18 @@ def mesh_case(case: Path, start: tuple[Path, float] | None = None) -> int:
     times by topoSet + refineMesh, and with ``start`` = (run, time) the band
     where that state has its surface, pool and droplets split ``bandLevel``
     times); return the number of cells."""
-    from .foamcase import RUN_FUNCTIONS, run
+    from .case import RUN_FUNCTIONS, Case
+    run = Case(case).run
 
-    run(case, "blockMesh")
-    run(case, "snappyHexMesh -overwrite")
+    run("blockMesh")
+    run("snappyHexMesh -overwrite")
     for split in range(1, skin_level(case) + 1):
-        run(case, "topoSet", log_name=f"topoSet.skin{split}")
-        run(case, "refineMesh -overwrite", log_name=f"refineMesh.skin{split}")
+        run("topoSet", log_name=f"topoSet.skin{split}")
+        run("refineMesh -overwrite", log_name=f"refineMesh.skin{split}")
     start_case, start_time = start if start else ("", 0.0)
     # The shell step of Allrun (bin/tools/RunFunctions); without a start it
     # refuses a bandLevel above 0
-    run(case, f". '{RUN_FUNCTIONS}' && refineBand '{Path(start_case).resolve() if start else ''}' "
+    run(f". '{RUN_FUNCTIONS}' && refineBand '{Path(start_case).resolve() if start else ''}' "
               f"{start_time:g}", log_name="refineBand")
     return cell_count(case)
 

@@ -29,7 +29,6 @@ from pathlib import Path
 
 import numpy as np
 
-from . import foamcase
 from .case import Case
 from .material import Metal, two_metals
 
@@ -584,7 +583,7 @@ def read_function_object_metrics(case: Case | Path, name: str = "meltPoolMetrics
     """Rows (time, metrics...) of postProcessing/<name>/*/meltPoolMetrics.dat
     by time, of every run (a run restarted from the same time as an earlier
     one writes ``meltPoolMetrics_<time>.dat``: its rows replace the earlier)."""
-    table = foamcase.read_function_object(Path(case), name, "meltPoolMetrics.dat")
+    table = Case(case).function_object(name, "meltPoolMetrics.dat")
     if table.size == 0:
         raise FileNotFoundError(f"no postProcessing/{name}/*/meltPoolMetrics.dat in {case}")
     return table[np.argsort(table[:, 0], kind="stable")]

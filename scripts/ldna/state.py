@@ -21,7 +21,7 @@ import shutil
 from pathlib import Path
 
 from .case import Case
-from .foamcase import read_table
+from .case import Case
 from .post import POST_FUNCTION, WELD_START_RECORD
 
 #: Fields a start maps (the solver computes the rest from them)
@@ -56,7 +56,7 @@ def _table_text(case: Path, name: str, file: str, start: float, end: float) -> s
     directories = sorted((case / "postProcessing" / name).glob("*"))
     header = next(iter(directories[0].glob(f"{file}.dat"))).read_text().splitlines()
     comments = [line for line in header if line.startswith("#")]
-    rows = read_table(case, name, file)
+    rows = Case(case).table(name, file)
     kept, last = [], -float("inf")
     for row in rows:
         t = float(row[0])

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .foamcase import dictionary_scalar, dictionary_value, read_internal_field, run
+from .case import Case
 
 
 def neumann_lambda(st_liquid: float, st_solid: float, diffusivity_ratio: float) -> float:
@@ -54,19 +54,19 @@ class NeumannSolution:
     def from_case(cls, case: Path) -> "NeumannSolution":
         """Material and boundary data as the case states them."""
         props = "constant/thermophysicalProperties"
-        t_melt = 0.5 * (dictionary_scalar(case, props, "metal/solidus")
-                        + dictionary_scalar(case, props, "metal/liquidus"))
-        latent = dictionary_scalar(case, props, "metal/latentHeat")
-        rho = dictionary_scalar(case, props, "metal/rho/solid")
-        cp = dictionary_scalar(case, props, "metal/Cp/solid")
-        kappa = dictionary_scalar(case, props, "metal/kappa/solid")
+        t_melt = 0.5 * (Case(case).scalar(props, "metal/solidus")
+                        + Case(case).scalar(props, "metal/liquidus"))
+        latent = Case(case).scalar(props, "metal/latentHeat")
+        rho = Case(case).scalar(props, "metal/rho/solid")
+        cp = Case(case).scalar(props, "metal/Cp/solid")
+        kappa = Case(case).scalar(props, "metal/kappa/solid")
         for phase in ("rho", "Cp", "kappa"):
-            if dictionary_value(case, props, f"metal/{phase}/liquid") != \
-                    dictionary_value(case, props, f"metal/{phase}/solid"):
+            if Case(case).value(props, f"metal/{phase}/liquid") != \
+                    Case(case).value(props, f"metal/{phase}/solid"):
                 raise ValueError(f"{case}: the Neumann solution used here needs equal solid "
                                  f"and liquid {phase}")
-        t_initial = dictionary_scalar(case, "0/T", "internalField")
-        t_wall = dictionary_scalar(case, "0/T", "boundaryField/hotWall/value")
+        t_initial = Case(case).scalar("0/T", "internalField")
+        t_wall = Case(case).scalar("0/T", "boundaryField/hotWall/value")
         lam = neumann_lambda(cp * (t_wall - t_melt) / latent,
                              cp * (t_melt - t_initial) / latent, 1.0)
         return cls(lam=lam, diffusivity=kappa / (rho * cp))
@@ -83,10 +83,10 @@ def front_position(case: Path, time: str) -> float:
     """
     case = Path(case)
     if not (case / time / "Cx").exists():
-        run(case, f"postProcess -func writeCellCentres -time '{time}'",
-            log_name="writeCellCentres")
-    liquid = read_internal_field(case / time / "liquidFraction")
-    x = read_internal_field(case / time / "Cx")
+        Case(case).run(f"postProcess -func writeCellCentres -time '{time}'",
+                       log_name="writeCellCentres")
+    liquid = Case(case).field("liquidFraction", time)
+    x = Case(case).field("Cx", time)
     i = int(np.argmax(liquid < 0.5))
     if i == 0:
         raise ValueError(f"{case}/{time}: no melting front inside the bar")

@@ -32,8 +32,8 @@ A parameter is named like the entry it sets:
   ``oscillationAmplitude``, ... : an entry of ``system/caseParameters``
   (the template's knobs; edited in place, comments kept);
 - ``FILE:ENTRY``, e.g. ``constant/fvOptions:laser/absorptionModel`` or
-  ``system/controlDict:maxCo``: any dictionary entry, set with OpenFOAM's
-  ``foamDictionary`` (which writes the file with its macros expanded).
+  ``system/controlDict:maxCo``: any dictionary entry the file has (edited
+  in place as well; an entry it does not have is an error, not added).
 """
 from __future__ import annotations
 
@@ -51,8 +51,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .case import Case
-from .foamcase import BALANCES, ENV_SCRIPT, time_directories
+from .case import BALANCES, Case
 from .post import BeadMetrics, post_process, read_function_object_metrics, summary
 from .steady import DomainBalance, case_table, first_steady, judge
 
@@ -118,9 +117,9 @@ class Member:
 def latest_time(case: Path) -> float:
     """The latest time a case has written (its first rank's when decomposed)."""
     case = Path(case)
-    times = time_directories(case)
+    times = Case(case).times
     if (case / "processor0").is_dir():
-        times += time_directories(case / "processor0")
+        times += Case(case / "processor0").times
     return max((float(t.name) for t in times), default=0.0)
 
 
@@ -222,7 +221,6 @@ class _Running:
 
     member: Member
     process: subprocess.Popen
-    log: object
     begin: float
     end_time: float
 
@@ -238,13 +236,11 @@ def launch_member(member: Member, parallel: bool,
     end_time = Case(member.path).scalar("system/controlDict", "endTime")
     if member.resumed and finished(member.path, end_time):
         return None
-    command = (f". '{ENV_SCRIPT}' && ./Allrun" + (" -parallel" if parallel else "")
+    command = ("./Allrun" + (" -parallel" if parallel else "")
                + (" -resume" if member.resumed else
                   start.allrun_options() if start else ""))
-    log = open(member.path / "log.Allrun", "a" if member.resumed else "w", encoding="utf-8")
-    process = subprocess.Popen(["bash", "-c", command], cwd=member.path,
-                               stdout=log, stderr=subprocess.STDOUT)
-    return _Running(member, process, log, time.time(), end_time)
+    process = Case(member.path).start(command, "Allrun", append=member.resumed)
+    return _Running(member, process, time.time(), end_time)
 
 
 def finish_member(member: Member, returncode: int, wall_time: float) -> None:
@@ -285,7 +281,6 @@ def run_members(members: list[Member], parallel: bool, jobs: int = 1,
         for run in list(running):
             if run.process.poll() is None:
                 continue
-            run.log.close()
             finish_member(run.member, run.process.returncode, time.time() - run.begin)
             running.remove(run)
             done += 1

@@ -29,9 +29,7 @@ from typing import Protocol
 import numpy as np
 
 from .. import meshing
-from ..case import Case
-from .. import foamcase
-from ..foamcase import BALANCES, PROJECT_DIR, RUN_FUNCTIONS
+from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, Case
 from ..foamdict import read_scalars
 from ..steady import SCALES as STEADY_SCALES
 from ..stefan import NeumannSolution, front_position
@@ -111,8 +109,7 @@ class LdnaScene:
         finest = self.mesh_level(case, level)
         # The metrics at the end time only: at write times, and the end is one
         for entry, value in (("writeControl", "writeTime"), ("writeInterval", "1")):
-            case.run(f"foamDictionary -entry functions/meltPoolMetrics/{entry} -set {value} "
-                     "system/controlDict", log_name="foamDictionary")
+            case.set("system/controlDict", f"functions/meltPoolMetrics/{entry}", value)
         return finest
 
     def prepare(self, case: Case, start: "StartState | None") -> None:
@@ -404,7 +401,7 @@ def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
     try:
         member.cpu_time = case.cpu_seconds()
         # Every leg of a member that was continued (--resume), not this one's
-        member.wall_time = foamcase.clock_seconds(case.path)
+        member.wall_time = case.clock_seconds()
     except FileNotFoundError:
         member.cpu_time = None
     if member.n_procs > 1:

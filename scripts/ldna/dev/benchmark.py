@@ -8,27 +8,34 @@ variant does the same steps:
 - ``laser_cost``: no laser and each laser absorption model, the template's
   other effects on;
 - ``solver_costs`` (``ldna bench``): from a developed state of the
-  template, ldnaFoam with no effects against OpenFOAM's
-  compressibleInterFoam on the same mesh, fields and numerics; the cost of
-  each effect of the template alone over the no-effect step (and of its
-  laser with Monte-Carlo rays); the throughput in cell-steps per second per
-  core with the projected core-hours per simulated second at the paper's
-  resolution; and the parallel efficiency of ``mpirun -np 2`` against a
-  serial run.
+  template, ldnaFoam with no effects and with all against OpenFOAM's
+  compressibleInterFoam on the same mesh, fields (the temperature
+  included) and numerics, its limiter sweeping as often as it needs to
+  keep the metal fraction as bounded as ldnaFoam does (and at OpenFOAM's
+  default); the cost of each effect of the template alone over the
+  no-effect step (and of its laser with Monte-Carlo rays), with whether
+  the effect acted in the window (its own table says so); the throughput
+  in cell-steps per second per core with the projected core-hours per
+  simulated second at the paper's resolution; and the parallel efficiency
+  of ``mpirun -np 2`` against a serial run, from wall time.  Every ratio is
+  the median over rounds of the ratio within each round, with its spread.
 """
 from __future__ import annotations
 
+import math
 import re
 import shutil
 import tempfile
-from dataclasses import dataclass
+import statistics
+import time
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 from foamlib import FoamFieldFile
 
 from ..case import Case
-from ..foamcase import PROJECT_DIR
+from ..case import PROJECT_DIR
 from ..foamdict import block_names, keep_blocks, read_scalars, remove_blocks
 
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
@@ -38,7 +45,14 @@ TEMPLATE = PROJECT_DIR / "cases" / "ldna"
 LASER_POWER = 1200.0
 LASER_BEAM_RADIUS = 1e-3
 LASER_MODELS = ("gaussianSurface", "beerLambert", "monteCarlo")
-
+#: OpenFOAM's default MULES limiter sweeps (v1912 MULESTemplates.C:
+#: nLimiterIter, default 3)
+OPENFOAM_LIMITER_ITERATIONS = 3
+#: Limiter sweeps tried for the reference, least first: the least whose
+#: metal fraction stays as bounded as ldnaFoam's is the reference (v1912's
+#: MULES always does all of them; ldnaFoam's limiter stops at the sweep
+#: that changes no face)
+REFERENCE_LIMITER_CANDIDATES = (3, 5, 10, 20, 50, 100)
 
 
 @dataclass
@@ -112,9 +126,18 @@ PAPER_CELLS = 690_000
 #: sqrt(rho dx^3 / (2 pi sigma)), which scales as dx^1.5 [s]
 CAPILLARY_EXPONENT = 1.5
 
+#: Argon's density for mass and inertia in the template: p/(R T) at its
+#: initial pressure 1e5 Pa, R 208.13 J/kg/K and referenceTemperature 300 K
+#: (constant/thermophysicalProperties, gas: Boussinesq).  The reference's
+#: gas has it everywhere (rhoConst): as a perfect gas, the 1800 K its cells
+#: take from the droplets' metal expands it into jets that raised the
+#: Courant number from 0.9 to 29 in seven steps and ended the run with a
+#: negative temperature (measured from the template's state at 0.02 s)
+ARGON_DENSITY = 1e5 / (208.13 * 300)
+
 #: The companion case of compressibleInterFoam: the template's metal and gas
-#: as OpenFOAM thermophysical models (316L at its reference density, argon),
-#: its constant surface tension, laminar flow
+#: as OpenFOAM thermophysical models (316L at its reference density, argon
+#: at its reference density), its constant surface tension, laminar flow
 COMPRESSIBLE_INTER_FOAM_FILES = {
     "constant/thermophysicalProperties": """FoamFile { version 2.0; format ascii;
     class dictionary; object thermophysicalProperties; }
@@ -132,10 +155,10 @@ mixture { specie { molWeight 55.85; } equationOfState { rho 7950; }
     "constant/thermophysicalProperties.gas": """FoamFile { version 2.0; format ascii;
     class dictionary; object thermophysicalProperties.gas; }
 thermoType { type heRhoThermo; mixture pureMixture; transport const; thermo hConst;
-    equationOfState perfectGas; specie specie; energy sensibleInternalEnergy; }
-mixture { specie { molWeight 39.948; } thermodynamics { Cp 520.3; Hf 0; }
-    transport { mu 2.27e-5; Pr 0.667; } }
-""",
+    equationOfState rhoConst; specie specie; energy sensibleInternalEnergy; }
+mixture { specie { molWeight 39.948; } equationOfState { rho %.6g; }
+    thermodynamics { Cp 520.3; Hf 0; } transport { mu 2.27e-5; Pr 0.667; } }
+""" % ARGON_DENSITY,
     "constant/turbulenceProperties": """FoamFile { version 2.0; format ascii;
     class dictionary; object turbulenceProperties; }
 simulationType laminar;
@@ -152,22 +175,39 @@ COMPRESSIBLE_INTER_FOAM_SCHEMES = {
 
 @dataclass
 class SolverCosts:
-    """What ``solver_costs`` measured."""
+    """What ``solver_costs`` measured (times per step [s]; ratios are medians
+    over the rounds of each round's own ratio)."""
 
     level: int
     cells: int
     steps: int
     delta_t: float
     start_time: float
+    #: Median CPU time per step: ldnaFoam without effects, the reference at
+    #: the bounding limiter sweeps and at OpenFOAM's default, all effects
     ldna_no_effects: float
     compressible_inter_foam: float
     effects: list[StepCost]
     all_effects: float
     template_delta_t: float
+    #: Wall time per step of the template serial and on ``n_procs`` ranks
     serial_all_effects: float
     parallel_all_effects: float
     n_procs: int
     repeats: int
+    #: The reference's MULES limiter sweeps (bounding as ldnaFoam) and the
+    #: reference at OpenFOAM's default sweeps
+    reference_limiter_iterations: int = OPENFOAM_LIMITER_ITERATIONS
+    default_reference: float = float("nan")
+    #: Largest excursion of the metal fraction outside [0, 1] over the window:
+    #: ldnaFoam's and the reference's at each sweep count tried
+    ldna_alpha_excursion: float = 0.0
+    reference_alpha_excursions: dict[int, float] = field(default_factory=dict)
+    #: Whether each effect acted in the window, and what says so
+    effect_active: dict[str, bool] = field(default_factory=dict)
+    effect_evidence: dict[str, str] = field(default_factory=dict)
+    #: Spread of each ratio over the rounds: (largest - least) / median
+    spreads: dict[str, float] = field(default_factory=dict)
 
     @property
     def throughput(self) -> float:
@@ -187,7 +227,7 @@ class SolverCosts:
 
     @property
     def parallel_efficiency(self) -> float:
-        """Serial time over (ranks x parallel time), per step."""
+        """Serial wall time over (ranks x parallel wall time), per step."""
         return self.serial_all_effects / (self.n_procs * self.parallel_all_effects)
 
     def summary(self) -> dict[str, object]:
@@ -199,13 +239,25 @@ class SolverCosts:
             "delta_t_s": self.delta_t,
             "start_time_s": self.start_time,
             "repeats": self.repeats,
+            "reference_limiter_iterations": self.reference_limiter_iterations,
             "reference_s_per_step": self.compressible_inter_foam,
+            "default_limiter_iterations": OPENFOAM_LIMITER_ITERATIONS,
+            "default_reference_s_per_step": self.default_reference,
+            "ldna_alpha_excursion": self.ldna_alpha_excursion,
+            "reference_alpha_excursions": {str(n): e for n, e in
+                                           self.reference_alpha_excursions.items()},
             "no_effects_s_per_step": self.ldna_no_effects,
             "all_effects_s_per_step": self.all_effects,
             "no_effects_ratio": self.ldna_no_effects / self.compressible_inter_foam,
             "all_effects_ratio": self.all_effects / self.compressible_inter_foam,
+            "all_effects_ratio_default_reference": self.all_effects / self.default_reference,
             "effect_ratios": {cost.variant: cost.ratio for cost in self.effects},
+            "effect_active": dict(self.effect_active),
+            "effect_evidence": dict(self.effect_evidence),
+            "ratio_spreads": dict(self.spreads),
             f"np{self.n_procs}_efficiency": self.parallel_efficiency,
+            "serial_wall_s_per_step": self.serial_all_effects,
+            "parallel_wall_s_per_step": self.parallel_all_effects,
             "throughput_cell_steps_per_core_s": self.throughput,
             "template_delta_t_s": self.template_delta_t,
             "projected_core_hours_per_simulated_s": self.projected_core_hours(),
@@ -248,8 +300,10 @@ def _only_time_info(case: Case) -> None:
 #: Monte-Carlo rays (the model's default, 10 000 a step)
 MONTE_CARLO_VARIANT = "laserMonteCarlo"
 
-#: The name of the reference variant: OpenFOAM's own solver
+#: The names of the reference variants: OpenFOAM's own solver at the
+#: limiter sweeps that bound as ldnaFoam, and at OpenFOAM's default sweeps
 REFERENCE_VARIANT = "compressibleInterFoam"
+DEFAULT_REFERENCE_VARIANT = "compressibleInterFoamDefault"
 
 
 def _monte_carlo_laser(options: str) -> str:
@@ -259,25 +313,55 @@ def _monte_carlo_laser(options: str) -> str:
     return re.sub(r"(absorptionModel\s+)beerLambert\s*;", r"\1monteCarlo;", text)
 
 
-def _compressible_inter_foam_case(scene: Case, destination: Path, start: Path) -> Case:
-    """The scene's mesh, fields (at the ``start`` time directory) and
-    numerics set up for compressibleInterFoam."""
+def _compressible_inter_foam_case(scene: Case, destination: Path, start: Path,
+                                  limiter_iterations: int) -> Case:
+    """The scene's mesh, fields (at the ``start`` time directory, the
+    temperature included) and numerics set up for compressibleInterFoam,
+    with ``limiter_iterations`` MULES limiter sweeps."""
     case = Case.copy_of(scene, destination)
     shutil.copytree(scene / "constant/polyMesh", case / "constant/polyMesh")
     shutil.copytree(start, case / start.name)
-    # The same metal and flow at the ambient temperature: compressibleInterFoam
-    # has no melting, and its temperature equation fails on the 2100 K
-    # droplets landing on cold metal within ten steps (negative temperature);
-    # its step costs one temperature solve whatever the temperatures are
-    ambient = read_scalars(scene / "system/caseParameters")["ambientTemperature"]
-    FoamFieldFile(case / f"{start.name}/T").internal_field = ambient
     for name, text in COMPRESSIBLE_INTER_FOAM_FILES.items():
         (case / name).write_text(text)
     (case / "constant/fvOptions").unlink(missing_ok=True)
     for entry, value in COMPRESSIBLE_INTER_FOAM_SCHEMES.items():
-        case.set("system/fvSchemes", entry, value)
+        case.set("system/fvSchemes", entry, value, create=True)
+    case.set("system/fvSolution", 'solvers/"alpha.metal.*"/nLimiterIter',
+             str(limiter_iterations))
     case.set("system/controlDict", "application", "compressibleInterFoam")
     return case
+
+
+#: The function object that records the metal fraction's range each step
+#: (bound probes only: the timed runs have timeInfo alone)
+ALPHA_RANGE_FUNCTION = """
+    alphaRange
+    {
+        type            fieldMinMax;
+        libs            ("libfieldFunctionObjects.so");
+        fields          (alpha.metal);
+        mode            component;
+        location        no;
+        writeControl    timeStep;
+        writeInterval   1;
+    }
+"""
+
+
+def _alpha_excursion_of_reference(case: Case) -> float:
+    """Run ``case`` (compressibleInterFoam) once with the metal fraction's
+    range recorded; its largest excursion outside [0, 1]."""
+    control = case / "system/controlDict"
+    timed = control.read_text()
+    control.write_text(timed.replace("functions\n{", "functions\n{" + ALPHA_RANGE_FUNCTION, 1))
+    try:
+        case.run("compressibleInterFoam", log_name="compressibleInterFoam.bounds")
+        table = case.latest_table("alphaRange", "fieldMinMax")
+    finally:
+        control.write_text(timed)
+    lowest = min(float(table[c].min()) for c in table.dtype.names if c.startswith("min"))
+    highest = max(float(table[c].max()) for c in table.dtype.names if c.startswith("max"))
+    return max(0.0, -lowest, highest - 1.0)
 
 
 @dataclass
@@ -291,38 +375,132 @@ class _Variant:
     n_procs: int = 1
     options: str | None = None
 
+    def run(self) -> float:
+        """Run once; the wall time [s] of the whole run."""
+        if self.options is not None:
+            (self.case / "constant/fvOptions").write_text(self.options)
+        began = time.perf_counter()
+        self.case.run(self.command, self.n_procs, log_name=self.log_name)
+        return time.perf_counter() - began
 
-def _least_times_per_step(variants: dict[str, _Variant], repeats: int) -> dict[str, float]:
-    """Least time per step of each variant over ``repeats`` rounds.
+
+def _start_up_seconds(variant: _Variant, steps: int, delta_t: float) -> float:
+    """Wall time [s] of a run of one step of ``variant``: what a run costs
+    before its steps (launch, mesh, fields) and one step."""
+    control = "system/controlDict"
+    end_time = variant.case.written(control, "endTime")
+    variant.case.set(control, "endTime", f"{float(end_time) - (steps - 1) * delta_t:.9g}")
+    try:
+        return variant.run()
+    finally:
+        variant.case.set(control, "endTime", end_time)
+
+
+def _rounds(variants: dict[str, _Variant], repeats: int, steps: int
+            ) -> tuple[dict[str, list[float]], dict[str, list[float]]]:
+    """CPU time per step (timeInfo, the master rank) and wall time of the
+    whole run of every variant in each of ``repeats`` rounds.
 
     Each round runs every variant once, so that a slow spell of the shared
-    virtual machine falls on all variants of a round rather than on the
-    repeats of one variant.  The least, because that scatter (measured:
-    0.062 and 0.084 s per step for the same compressibleInterFoam run) only
-    ever adds time.
+    virtual machine falls on all variants of a round; each round's ratios
+    are taken within the round, and their median over the rounds counts.
     """
     for variant in variants.values():
         if variant.n_procs > 1:
-            variant.case.decompose()
-    times: dict[str, list[float]] = {name: [] for name in variants}
+            variant.case.decompose(variant.n_procs)
+    cpu: dict[str, list[float]] = {name: [] for name in variants}
+    wall: dict[str, list[float]] = {name: [] for name in variants}
     for _ in range(repeats):
         for name, variant in variants.items():
-            if variant.options is not None:
-                (variant.case / "constant/fvOptions").write_text(variant.options)
-            variant.case.run(variant.command, variant.n_procs, log_name=variant.log_name)
-            times[name].append(variant.case.seconds_per_step())
-    return {name: min(values) for name, values in times.items()}
+            wall[name].append(variant.run())
+            cpu[name].append(variant.case.seconds_per_step())
+    return cpu, wall
 
 
-def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_procs: int = 2,
-                 repeats: int = 3, work_dir: Path | None = None) -> SolverCosts:
+def _median_ratio(numerator: list[float], denominator: list[float]) -> tuple[float, float]:
+    """Median over the rounds of each round's ratio, and the ratios' spread
+    ((largest - least) / median)."""
+    ratios = [a / b for a, b in zip(numerator, denominator)]
+    median = statistics.median(ratios)
+    return median, (max(ratios) - min(ratios)) / median
+
+
+#: What says that an effect acted in the window: its own table under
+#: postProcessing (function object, file, column) and that some row's value
+#: is above zero; the droplets are judged by their insertions (below), the
+#: enthalpy porosity by liquid metal in the solver's balances
+EFFECT_TABLES = {
+    "laser": ("laser", "power", "absorbedMetal"),
+    "marangoni": ("marangoni", "force", "maxTangentialStress"),
+    "evaporation": ("evaporation", "evaporation", "massRate"),
+    "surfaceLosses": ("surfaceLosses", "losses", "radiated"),
+}
+#: Gravity [m/s2] of the droplets' fall (the template's constant/g)
+GRAVITY = 9.81
+
+
+def _droplet_landing(case: Case, start: float, end: float) -> tuple[bool, str]:
+    """Whether a droplet was inserted in [start, end] and had landed by
+    ``end``: its fall from the insertion (the bottom of the sphere) to the
+    substrate's surface at the template's droplet speed under gravity, an
+    upper bound (a deposit under the wires shortens it)."""
+    try:
+        table = case.latest_table("wireDroplets", "insertions")
+    except (FileNotFoundError, ValueError):
+        return False, "no insertions table"
+    speed = case.scalar("system/caseParameters", "dropletSpeed")
+    for row in np.atleast_1d(table):
+        onset = float(row["Time"])
+        height = float(row["centreZ"]) - float(row["radius"])
+        fall = (-speed + math.sqrt(speed**2 + 2 * GRAVITY * height)) / GRAVITY
+        if start <= onset and onset + fall <= end:
+            return True, (f"inserted at {onset:.4g} s, {1e3 * height:.2g} mm up, landed by "
+                          f"{onset + fall:.4g} s")
+    return False, f"no droplet inserted in {start:g}-{end:g} s that landed by its end"
+
+
+def _effect_activity(name: str, case: Case, start: float, end: float) -> tuple[bool, str]:
+    """Whether the effect ``name`` acted in its own variant's run, and why."""
+    if name == "wireDroplets":
+        return _droplet_landing(case, start, end)
+    if name == "enthalpyPorosity":
+        liquid = float(case.balances()["liquid_volume"].max())
+        return liquid > 0, f"liquid metal up to {1e9 * liquid:.3g} mm3"
+    if name not in EFFECT_TABLES:
+        return False, "no table says"
+    table_name, file, column = EFFECT_TABLES[name]
+    try:
+        values = np.asarray(case.latest_table(table_name, file)[column], dtype=float)
+    except (FileNotFoundError, ValueError):
+        return False, f"no {table_name}/{file} table"
+    return bool(values.max() > 0), f"{column} up to {values.max():.3g}"
+
+
+def _template_alpha_excursion(case: Case) -> float:
+    """Largest excursion of ldnaFoam's metal fraction outside [0, 1] over
+    its latest run (its balances table, one row a step)."""
+    balances = case.balances()
+    return max(0.0, -float(balances["alpha_min"].min()), float(balances["alpha_max"].max()) - 1)
+
+
+def solver_costs(level: int = 0, steps: int = 140, start_time: float = 0.1, n_procs: int = 2,
+                 repeats: int = 5, work_dir: Path | None = None) -> SolverCosts:
     """Run every variant of the benchmark ``repeats`` times; see the module's description.
 
     The template first runs with its adaptive step from the flat substrate
     to ``start_time`` (0.1 s: droplets in flight and landing on a first
     deposit, heated by the laser); every variant then does ``steps`` steps of
-    the template's mean step over the second half of that run from its state.
+    the template's mean step over the second half of that run from its state
+    (140 steps at level 0: 25 ms, in which a droplet of each wire is
+    inserted and lands).  The reference, compressibleInterFoam from the same
+    fields, temperature included, sweeps its limiter as often as it needs to
+    keep the metal fraction as bounded as ldnaFoam's (the least of
+    REFERENCE_LIMITER_CANDIDATES whose excursion outside [0, 1] is at most
+    ldnaFoam's or the template's traceMetalFraction, the fraction ldnaFoam
+    counts as no metal), and at OpenFOAM's default.
     """
+    if steps < 2:
+        raise ValueError(f"--steps {steps}: at least 2 (a run's start-up is its one-step run)")
     scratch = Path(work_dir or tempfile.mkdtemp(prefix="ldna-bench-"))
     scene = Case.copy_of(TEMPLATE, scratch / "ldna")
     scene.set("system/caseParameters", "level", str(level))
@@ -347,8 +525,10 @@ def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_pro
     start = adaptive.times[-1]
     shutil.copytree(start, scene / start.name)
     delta_t = float(f"{template_delta_t:.3g}")
+    begin = float(start.name)
+    end = begin + steps * delta_t
 
-    _fixed_steps(scene, steps, delta_t, float(start.name))
+    _fixed_steps(scene, steps, delta_t, begin)
 
     fv_options = scene / "constant/fvOptions"
 
@@ -358,49 +538,103 @@ def solver_costs(level: int = 0, steps: int = 40, start_time: float = 0.1, n_pro
         keep_blocks(fv_options, names)
         return _Variant(scene, "ldnaFoam", log_name, n, fv_options.read_text())
 
+    # How bounded ldnaFoam keeps the metal fraction with every effect, and
+    # the reference's sweeps that keep it so
+    everything = ldna_with(effects, "ldnaFoam.all")
+    everything.run()
+    ldna_excursion = _template_alpha_excursion(scene)
+    bound = max(ldna_excursion, float(scene.written("system/fvSolution",
+                                                    'solvers/"alpha.metal.*"/traceMetalFraction')))
+    excursions: dict[int, float] = {}
+    reference_sweeps = REFERENCE_LIMITER_CANDIDATES[-1]
+    for sweeps in REFERENCE_LIMITER_CANDIDATES:
+        probe = _compressible_inter_foam_case(scene, scratch / f"reference{sweeps}", start, sweeps)
+        excursions[sweeps] = _alpha_excursion_of_reference(probe)
+        if excursions[sweeps] <= bound:
+            reference_sweeps = sweeps
+            break
+
     variants = {"none": ldna_with([], "ldnaFoam.none")}
-    inter = _compressible_inter_foam_case(scene, scratch / "compressibleInterFoam", start)
-    variants[REFERENCE_VARIANT] = _Variant(inter, "compressibleInterFoam",
-                                           "compressibleInterFoam")
+    variants[REFERENCE_VARIANT] = _Variant(
+        Case(scratch / f"reference{reference_sweeps}"), "compressibleInterFoam",
+        "compressibleInterFoam")
+    if reference_sweeps != OPENFOAM_LIMITER_ITERATIONS:
+        variants[DEFAULT_REFERENCE_VARIANT] = _Variant(
+            Case(scratch / f"reference{OPENFOAM_LIMITER_ITERATIONS}"), "compressibleInterFoam",
+            "compressibleInterFoam")
     for name in effects:
         variants[name] = ldna_with([name], f"ldnaFoam.{name}")
     monte_carlo = _monte_carlo_laser(full_options)
     if "laser" in effects and monte_carlo != full_options:
         variants[MONTE_CARLO_VARIANT] = ldna_with(["laser"], "ldnaFoam.laserMonteCarlo",
                                                   options=monte_carlo)
-    variants["all"] = ldna_with(effects, "ldnaFoam.all")
+    variants["all"] = everything
     variants["parallel"] = ldna_with(effects, "ldnaFoam.parallel", n_procs)
 
-    least = _least_times_per_step(variants, repeats)
-    no_effects = least["none"]
-    costs = [StepCost(name, least[name], least[name] / no_effects)
-             for name in variants if name in effects or name == MONTE_CARLO_VARIANT]
+    cpu, wall = _rounds(variants, repeats, steps)
+    # Each effect's activity from its own variant's last run (its tables)
+    active, evidence = {}, {}
+    for name in effects:
+        variants[name].run()
+        active[name], evidence[name] = _effect_activity(name, scene, begin, end)
+    # Wall time per step: a run of one step (start-up and a step) taken off
+    wall_per_step = {name: (statistics.median(wall[name])
+                            - _start_up_seconds(variants[name], steps, delta_t)) / (steps - 1)
+                     for name in ("all", "parallel")}
+
+    median = {name: statistics.median(values) for name, values in cpu.items()}
+    spreads: dict[str, float] = {}
+    costs = []
+    for name in variants:
+        if name in effects or name == MONTE_CARLO_VARIANT:
+            ratio, spreads[name] = _median_ratio(cpu[name], cpu["none"])
+            costs.append(StepCost(name, median[name], ratio))
+    _, spreads["no_effects"] = _median_ratio(cpu["none"], cpu[REFERENCE_VARIANT])
+    _, spreads["all_effects"] = _median_ratio(cpu["all"], cpu[REFERENCE_VARIANT])
+    default = median.get(DEFAULT_REFERENCE_VARIANT, median[REFERENCE_VARIANT])
     return SolverCosts(level=level, cells=scene.cells, steps=steps, delta_t=delta_t,
-                       start_time=float(start.name), ldna_no_effects=no_effects,
-                       compressible_inter_foam=least[REFERENCE_VARIANT],
-                       effects=costs, all_effects=least["all"],
+                       start_time=begin, ldna_no_effects=median["none"],
+                       compressible_inter_foam=median[REFERENCE_VARIANT],
+                       effects=costs, all_effects=median["all"],
                        template_delta_t=template_delta_t,
-                       serial_all_effects=least["all"], parallel_all_effects=least["parallel"],
-                       n_procs=n_procs, repeats=repeats)
+                       serial_all_effects=wall_per_step["all"],
+                       parallel_all_effects=wall_per_step["parallel"],
+                       n_procs=n_procs, repeats=repeats,
+                       reference_limiter_iterations=reference_sweeps,
+                       default_reference=default, ldna_alpha_excursion=ldna_excursion,
+                       reference_alpha_excursions=excursions, effect_active=active,
+                       effect_evidence=evidence, spreads=spreads)
 
 
 def print_solver_costs(c: SolverCosts) -> None:
     """Print the benchmark's figures and ratios."""
     print(f"LDNA template, level {c.level}: {c.cells} cells, {c.steps} fixed steps of "
-          f"{c.delta_t:g} s from the state at {c.start_time:g} s, CPU time per step "
-          f"(least of {c.repeats} runs)")
-    print(f"  compressibleInterFoam          {c.compressible_inter_foam:9.4f} s")
+          f"{c.delta_t:g} s from the state at {c.start_time:g} s; CPU time per step, "
+          f"median of {c.repeats} rounds (ratios: median of each round's ratio, spread = "
+          f"(largest - least) / median)")
+    tried = ", ".join(f"{n}: {e:.2g}" for n, e in c.reference_alpha_excursions.items())
+    print(f"  metal fraction outside [0, 1]: ldnaFoam {c.ldna_alpha_excursion:.2g}; "
+          f"compressibleInterFoam by limiter sweeps {tried}")
+    print(f"  compressibleInterFoam, {c.reference_limiter_iterations:>3} sweeps {'':6}"
+          f"{c.compressible_inter_foam:9.4f} s")
+    print(f"  compressibleInterFoam, {OPENFOAM_LIMITER_ITERATIONS:>3} sweeps (default)"
+          f"{c.default_reference:9.4f} s")
     print(f"  ldnaFoam, no effects           {c.ldna_no_effects:9.4f} s   ratio to "
-          f"compressibleInterFoam {c.ldna_no_effects / c.compressible_inter_foam:.3f}")
+          f"compressibleInterFoam {c.ldna_no_effects / c.compressible_inter_foam:.3f} "
+          f"(spread {c.spreads.get('no_effects', float('nan')):.1%})")
     for cost in c.effects:
+        acted = c.effect_active.get(cost.variant)
+        note = "" if acted is None else ("acted: " if acted else "DID NOT ACT: ") + \
+            c.effect_evidence.get(cost.variant, "")
         print(f"  ldnaFoam + {cost.variant:<20} {cost.seconds_per_step:9.4f} s   ratio to "
-              f"no effects {cost.ratio:.3f}")
+              f"no effects {cost.ratio:.3f} (spread {c.spreads.get(cost.variant, 0):.1%})  {note}")
     print(f"  ldnaFoam, all effects          {c.all_effects:9.4f} s   ratio to "
-          f"no effects {c.all_effects / c.ldna_no_effects:.3f}")
+          f"compressibleInterFoam {c.all_effects / c.compressible_inter_foam:.3f} "
+          f"(spread {c.spreads.get('all_effects', float('nan')):.1%}; "
+          f"{c.all_effects / c.default_reference:.3f} at its default sweeps)")
     print(f"Throughput (all effects, serial): {c.throughput:.4g} cell-steps per second per core")
     print(f"Template's adaptive time step at this level: {c.template_delta_t:.3g} s")
     print(f"Projected for the paper's {PAPER_CELLS} cells (0.15 mm at the surface): "
           f"{c.projected_core_hours():.4g} core-hours per simulated second")
-    print(f"mpirun -np {c.n_procs}: {c.parallel_all_effects:.4f} s per step, speed-up "
-          f"{c.serial_all_effects / c.parallel_all_effects:.3f}, parallel efficiency "
-          f"{c.parallel_efficiency:.3f}")
+    print(f"mpirun -np {c.n_procs}: wall {c.parallel_all_effects:.4f} s per step against "
+          f"{c.serial_all_effects:.4f} serial, parallel efficiency {c.parallel_efficiency:.3f}")

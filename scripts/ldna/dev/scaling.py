@@ -28,7 +28,6 @@ from pathlib import Path
 import numpy as np
 
 from ..case import Case
-from ..foamcase import latest_run_table, read_internal_field
 
 #: An InfiniBand interconnect: the one-way MPI latency of a zero-byte
 #: message and the bandwidth between 8 and 16 kB messages, from the
@@ -89,7 +88,8 @@ def decomposition(case: Case, split: tuple[int, int, int]) -> Decomposition:
                  log_name=f"decomposePar.scaling{ranks}")
         written = sorted(case.path.glob("*/cellDist"), key=lambda p: p.stat().st_mtime)
         # One rank: written as a uniform field
-        rank = np.broadcast_to(read_internal_field(written[-1]).astype(int), case.cells)
+        rank = np.broadcast_to(case.field("cellDist", written[-1].parent).astype(int),
+                               case.cells)
         written[-1].unlink()
     finally:
         dictionary.unlink()
@@ -114,7 +114,7 @@ def decomposition(case: Case, split: tuple[int, int, int]) -> Decomposition:
 def seconds_per_step(case: Path) -> float:
     """Mean CPU seconds of the master rank per step of the case's latest run
     (its first step, the start-up, left out)."""
-    table = latest_run_table(case, "timeInfo", "timeInfo")
+    table = Case(case).latest_table("timeInfo", "timeInfo")
     cpu = np.asarray(table["cpuTime"], dtype=float)
     if len(cpu) < 3:
         raise ValueError(f"{case}: its timeInfo has {len(cpu)} rows; run a few steps more")

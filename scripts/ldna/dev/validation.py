@@ -40,7 +40,6 @@ from .. import post, steady
 from ..balance import evaporation_table, patch_flows
 from ..material import Metal
 from ..case import Case
-from ..foamcase import simulated_seconds
 from ..meshing import cell_count
 
 #: Column of the bead area in meltPoolMetrics.dat (after the time)
@@ -197,7 +196,7 @@ def bead_report(case: Path, output: Path, section: str = "meltPoolMetrics",
         "core_hours": hours,
         # Over what the case's runs simulated (not a saved state's tables)
         "core_hours_per_simulated_s": hours / (
-            simulated_seconds(case) if master_cpu_seconds is None
+            Case(case).simulated_seconds() if master_cpu_seconds is None
             else float(times[-1]) - float(times[0])),
         "averaging_window_s": verdict.window,
         "mean_bead_area_mm2": 1e6 * area.mean,

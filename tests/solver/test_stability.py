@@ -31,7 +31,7 @@ import pytest
 
 from ldna.balance import metal_mass_balance, solver_health
 from ldna.case import Case
-from ldna.foamdict import read_scalars, set_block_entry
+from ldna.foamdict import read_scalars
 
 #: Metal fraction bounds: a bounded scheme keeps it within 1e-6 of [0, 1]
 ALPHA_LOW, ALPHA_HIGH = -1e-6, 1 + 1e-6
@@ -96,18 +96,16 @@ def ten_times_marangoni(case: Case) -> None:
     7.3 N/m, so the capillary time step limit tightens too.
     """
     sigma_top = IRON_SIGMA + IRON_SLOPE * (SIGMA_CHECK_TMAX - IRON_MELTING)
-    case.run("foamDictionary -entry sigma -set '{ type linear; "
-             f"sigma0 {sigma_top:.6g}; dSigmadT {10 * IRON_SLOPE:.6g}; "
-             f"Tref {SIGMA_CHECK_TMAX:g}; }}' constant/thermophysicalProperties",
-             log_name="foamDictionary.sigma")
+    case.set("constant/thermophysicalProperties", "sigma",
+             f"{{ type linear; sigma0 {sigma_top:.6g}; dSigmadT {10 * IRON_SLOPE:.6g}; "
+             f"Tref {SIGMA_CHECK_TMAX:g}; }}")
 
 
 def irregular_start(case: Case) -> None:
     """The irregular start (droplets of twice the diameter, 8x the mass) all run long."""
-    set_block_entry(case / "constant" / "fvOptions", "wireDroplets",
-                    "irregularityTime", f"{END_TIME:g}")
-    set_block_entry(case / "constant" / "fvOptions", "wireDroplets",
-                    "irregularDiameterFactor", "2")
+    case.set("constant/fvOptions", "wireDroplets/irregularityTime", f"{END_TIME:g}",
+             create=True)
+    case.set("constant/fvOptions", "wireDroplets/irregularDiameterFactor", "2", create=True)
 
 
 def courant_one(case: Case) -> None:

@@ -41,8 +41,7 @@ def test_metal_mass_source_is_conserved(energy_box_case: Case) -> None:
     (case / "constant" / "fvOptions").write_text(INJECTION)
     # Liquid metal at a uniform temperature above the liquidus
     liquid_temperature = 1800.0
-    case.run(f"foamDictionary -entry internalField -set 'uniform {liquid_temperature}' 0/T",
-             log_name="foamDictionary.T")
+    case.set("0/T", "internalField", f"uniform {liquid_temperature}")
     case.set("system/controlDict", "endTime", "0.5")
     case.set("system/controlDict", "writeInterval", "0.5")
 

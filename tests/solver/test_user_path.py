@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from ldna.case import Case
-from ldna.foamcase import PROJECT_DIR
+from ldna.case import PROJECT_DIR
 from userpath import SHELLS, run_as_user, user_command
 
 pytestmark = pytest.mark.user_path

@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from ldna.case import Case
-from ldna.foamcase import PROJECT_DIR
+from ldna.case import PROJECT_DIR
 from ldna.post import read_function_object_metrics
 from userpath import run_as_user
 

@@ -40,8 +40,8 @@ import pytest
 from ldna.balance import WIRE_COLUMNS, metal_mass_balance, wire_table
 from ldna.case import Case
 from ldna.foamdict import keep_blocks
+from solver_cases import TEMPLATE
 
-TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
 
 #: Time of the comparison [s]
 END_TIME = "0.015"

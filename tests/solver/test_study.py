@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 from solver_cases import TEMPLATE
-from ldna.foamcase import run
+from ldna.case import Case
 from ldna.foamdict import read_scalars
 from ldna.study import Parameter, make_members
 
@@ -37,11 +37,11 @@ def test_study_of_a_three_by_one_grid(tmp_path: Path) -> None:
     study_dir = tmp_path / "study"
     ldna = Path(sys.executable).parent / "ldna"
     temperatures = ",".join(DROPLET_TEMPERATURES + (BAD_DROPLET_TEMPERATURE,))
-    result = run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} "
-                           f"--set dropletTemperature={temperatures} "
-                           f"--set weldingSpeed={WELDING_SPEED} --end-time {END_TIME} "
-                           f"--jobs 2",
-                 log_name="study", check=False)
+    result = Case(tmp_path).run(f"{ldna} study {TEMPLATE} {study_dir} "
+                                f"--set dropletTemperature={temperatures} "
+                                f"--set weldingSpeed={WELDING_SPEED} --end-time {END_TIME} "
+                                f"--jobs 2",
+                                log_name="study", check=False)
     print(result.output[-500:])
     assert result.returncode != 0, "a failed member fails the study"
 
@@ -83,10 +83,10 @@ def test_study_resumes_from_the_latest_written_time(tmp_path: Path) -> None:
     study_dir = tmp_path / "study"
     ldna = Path(sys.executable).parent / "ldna"
     command = f"{ldna} study {TEMPLATE} {study_dir} --set dropletTemperature=2100"
-    run(tmp_path, f"{command} --end-time {FIRST_LEG_END}", log_name="study")
+    Case(tmp_path).run(f"{command} --end-time {FIRST_LEG_END}", log_name="study")
     member = study_dir / "member000"
     first_leg_log = (member / "log.ldnaFoam").read_text()
-    run(tmp_path, f"{command} --end-time {RESUMED_END} --resume", log_name="study.resume")
+    Case(tmp_path).run(f"{command} --end-time {RESUMED_END} --resume", log_name="study.resume")
 
     log = (member / "log.ldnaFoam").read_text()
     assert log.startswith(first_leg_log), "the second leg appends to the first's log"
@@ -117,12 +117,12 @@ def test_study_members_start_from_a_run(tmp_path: Path) -> None:
     fields (a steady neighbour in a real study), not from the flat substrate."""
     ldna = Path(sys.executable).parent / "ldna"
     source_study = tmp_path / "source"
-    run(tmp_path, f"{ldna} study {TEMPLATE} {source_study} --set dropletTemperature=2100 "
-                  f"--end-time {FIRST_LEG_END}", log_name="source")
+    Case(tmp_path).run(f"{ldna} study {TEMPLATE} {source_study} --set dropletTemperature=2100 "
+                       f"--end-time {FIRST_LEG_END}", log_name="source")
     source = source_study / "member000"
     study_dir = tmp_path / "study"
-    run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} --set laserPower=1000 "
-                  f"--start-from {source} --end-time {RESUMED_END}", log_name="study")
+    Case(tmp_path).run(f"{ldna} study {TEMPLATE} {study_dir} --set laserPower=1000 "
+                       f"--start-from {source} --end-time {RESUMED_END}", log_name="study")
     member = study_dir / "member000"
     log = (member / "log.ldnaFoam").read_text()
     latest = max((p for p in source.iterdir() if p.name[0].isdigit() and p.name != "0"),
@@ -135,9 +135,9 @@ def test_study_members_start_from_a_run(tmp_path: Path) -> None:
 
     # Resumed, such a member continues from its latest written time, not
     # from the time it started from
-    run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} --set laserPower=1000 "
-                  f"--start-from {source} --end-time {SECOND_LEG_END} --resume",
-        log_name="study.resume")
+    Case(tmp_path).run(f"{ldna} study {TEMPLATE} {study_dir} --set laserPower=1000 "
+                       f"--start-from {source} --end-time {SECOND_LEG_END} --resume",
+                       log_name="study.resume")
     last_start = re.findall(r"Create mesh for time = (\S+)",
                             (member / "log.ldnaFoam").read_text())[-1]
     assert abs(float(last_start) - RESUMED_END) < MAX_DELTA_T, last_start
@@ -150,9 +150,9 @@ def test_a_failed_parallel_member_reports_its_foam_error(tmp_path: Path) -> None
     followed by MPI's abort notice: results.csv must hold the error."""
     study_dir = tmp_path / "study"
     ldna = Path(sys.executable).parent / "ldna"
-    result = run(tmp_path, f"{ldna} study {TEMPLATE} {study_dir} "
-                           f"--set dropletTemperature={BAD_DROPLET_TEMPERATURE} "
-                           f"--end-time {END_TIME} --np 2", log_name="study", check=False)
+    result = Case(tmp_path).run(f"{ldna} study {TEMPLATE} {study_dir} "
+                                f"--set dropletTemperature={BAD_DROPLET_TEMPERATURE} "
+                                f"--end-time {END_TIME} --np 2", log_name="study", check=False)
     assert result.returncode != 0
     with open(study_dir / "results.csv", encoding="utf-8") as stream:
         (row,) = list(csv.DictReader(stream))

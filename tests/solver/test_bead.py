@@ -46,8 +46,7 @@ def droplet_radius(log_text: str) -> float:
 def insertion_box(tmp_path: Path) -> Case:
     """The closed argon box of the droplet tests, 1/3 mm cells, droplets inserted."""
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
-    case.run("foamDictionary -entry wireDroplets/mode -add insertion constant/fvOptions",
-             log_name="foamDictionary.mode")
+    case.set("constant/fvOptions", "wireDroplets/mode", "insertion", create=True)
     block_mesh = case / "system" / "blockMeshDict"
     block_mesh.write_text(block_mesh.read_text().replace("(20 16 32)", "(30 24 48)"))
     case.run("blockMesh")
@@ -174,8 +173,7 @@ def test_inserted_droplet_holds_the_sphere_cell_by_cell(insertion_box: Case) -> 
 
 def test_insertion_stops_on_unresolved_droplets(tmp_path: Path) -> None:
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
-    case.run("foamDictionary -entry wireDroplets/mode -add insertion constant/fvOptions",
-             log_name="foamDictionary.mode")
+    case.set("constant/fvOptions", "wireDroplets/mode", "insertion", create=True)
     case.run("blockMesh")
     result = case.run("ldnaFoam", check=False)
     assert result.returncode != 0
@@ -202,8 +200,7 @@ def test_resolved_droplet_flies_as_a_body(tmp_path: Path) -> None:
     case = prepare_test_case("dropletBox", tmp_path, material_from_template=True)
     options = "constant/fvOptions"
     for entry, value in (("mode", "insertion"), ("switchPhase", f"{EARLY_PULSE_PHASE:.4f}")):
-        case.run(f"foamDictionary -entry wireDroplets/{entry} -add {value} {options}",
-                 log_name=f"foamDictionary.{entry}")
+        case.set(options, f"wireDroplets/{entry}", value, create=True)
     # 0.222 mm cells: three per droplet radius
     block_mesh = case / "system" / "blockMeshDict"
     block_mesh.write_text(block_mesh.read_text().replace("(20 16 32)", "(45 36 72)"))

@@ -161,8 +161,7 @@ def test_droplet_momentum_without_gravity(droplet_case: Case) -> None:
     case = droplet_case
     (case / "constant" / "g").write_text(
         (case / "constant" / "g").read_text().replace("(0 0 -9.81)", "(0 0 0)"))
-    case.run("foamDictionary -entry sigma -set 0 constant/thermophysicalProperties",
-             log_name="foamDictionary.sigma")
+    case.set("constant/thermophysicalProperties", "sigma", "0")
     # Two droplet periods: the first droplet travels about 8 mm, the source
     # is 13 mm above the floor
     t_end = 0.02
@@ -210,8 +209,7 @@ BAD_INPUTS = [
                          ids=[b[0] for b in BAD_INPUTS])
 def test_bad_droplet_input(droplet_case: Case, description: str, entry: str, value: str,
                            expected: list[str]) -> None:
-    droplet_case.run(f"foamDictionary -entry '{entry}' -set '{value}' {SOURCE}",
-                     log_name="foamDictionary")
+    droplet_case.set(SOURCE, entry, value, create=True)
     result = droplet_case.run("ldnaFoam", check=False)
     error = result.output[result.output.find("FOAM FATAL"):]
     print(error[:500])

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from ldna.case import Case
-from ldna.foamcase import PROJECT_DIR
+from ldna.case import PROJECT_DIR
 from userpath import run_as_user
 
 pytestmark = pytest.mark.user_path
@@ -60,8 +60,7 @@ def shorten(tutorial: Path, steps: int) -> None:
     delta_t = case.scalar("system/controlDict", "deltaT")
     end_time = f"{steps * delta_t:g}"
     for entry in ("endTime", "writeInterval"):
-        case.run(f"foamDictionary -entry {entry} -set {end_time} system/controlDict",
-                 log_name=f"foamDictionary.{entry}")
+        case.set("system/controlDict", entry, end_time)
 
 
 def run_shortened(tutorial: Path, tmp_path: Path, script: str) -> None:

@@ -1,5 +1,8 @@
 """Running OpenFOAM applications on ldnaFoam cases and reading their results.
 
+Private to the package: the tools and the tests go through ``ldna.case.Case``,
+which calls these functions.
+
 Applications run in the environment of ``bin/ldna-env`` (the sourced
 OpenFOAM, or the Debian v1912 one that ``bin/ldna-install`` set up), each with
 its output in ``log.<application>`` inside the case, as OpenFOAM's
@@ -53,6 +56,16 @@ def run(case: Path, command: str, log_name: str | None = None, check: bool = Tru
         tail = "\n".join(result.output.splitlines()[-30:])
         raise RuntimeError(f"'{command}' failed in {case} (exit {proc.returncode}):\n{tail}")
     return result
+
+
+def start(case: Path, command: str, log_name: str, append: bool = False) -> subprocess.Popen:
+    """Start a shell ``command`` inside ``case`` with the ldnaFoam environment
+    and return at once; the output goes to ``case/log.<log_name>``."""
+    case = Path(case)
+    with (case / f"log.{log_name}").open("a" if append else "w") as out:
+        # The child writes to its own copy of the log's descriptor
+        return subprocess.Popen(["bash", "-c", f'. "{ENV_SCRIPT}" && {command}'], cwd=case,
+                                stdout=out, stderr=subprocess.STDOUT)
 
 
 def run_parallel(case: Path, command: str, n_procs: int, log_name: str | None = None,

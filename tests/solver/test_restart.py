@@ -17,8 +17,9 @@ import numpy as np
 import pytest
 
 from ldna.balance import metal_mass_balance
-from ldna import foamcase, post
-from ldna.case import Case
+from ldna import post
+from ldna.case import TIME_INFO, Case
+from solver_cases import PROJECT_DIR
 
 #: Where the interrupted run stops, and where both runs end [s]
 #: The first droplets are inserted at 9.7 ms, before the stop, the next ones
@@ -34,7 +35,7 @@ FIELDS = ("alpha.metal", "T", "U", "p_rgh")
 CONTINUED_END = "0.016"
 LDNA = Path(sys.executable).parent / "ldna"
 #: The checkout the Allrun of a case outside it needs
-LDNA_DIR = Path(__file__).resolve().parents[1]
+LDNA_DIR = PROJECT_DIR
 
 
 def prepare(case: Case) -> None:
@@ -79,8 +80,8 @@ def test_restart_equals_uninterrupted_run(ldna_case: Case, tmp_path: Path) -> No
     assert f"Create mesh for time = {STOP_TIME}" in (carried / "log.ldnaFoam").read_text(), \
         "the unpacked run did not continue from the packed time"
     # Its cost covers both legs: the first leg's timings came with it
-    assert len(foamcase.table_files(carried.path, *foamcase.TIME_INFO)) == 2
-    assert foamcase.simulated_seconds(carried.path) == pytest.approx(float(END_TIME), rel=1e-6)
+    assert len(carried.table_files(*TIME_INFO)) == 2
+    assert carried.simulated_seconds() == pytest.approx(float(END_TIME), rel=1e-6)
 
     for continued in (interrupted, carried):
         for field in FIELDS:

@@ -14,7 +14,6 @@ import numpy as np
 import pytest
 
 from ldna.case import Case
-from ldna.foamcase import find_tables
 
 #: Allowed errors of the capillary checks
 LAPLACE_TOLERANCE = 0.02
@@ -78,8 +77,7 @@ def test_static_drop_has_the_laplace_pressure(static_droplet_case: Case) -> None
 def freeze(case: Case) -> None:
     """Set the cylinder 300 K below the metal's solidus."""
     solidus = case.scalar(PROPERTIES, "metal/solidus")
-    case.run(f"foamDictionary -entry internalField -set 'uniform {solidus - 300:g}' 0/T",
-             log_name="foamDictionary.T")
+    case.set("0/T", "internalField", f"uniform {solidus - 300:g}")
 
 
 def capillary_limit(case: Case, h: float) -> float:
@@ -175,7 +173,7 @@ def test_marangoni_return_flow(marangoni_layer_case: Case, d_sigma_d_t: float) -
     evaluated at the surface.
     """
     case = marangoni_layer_case
-    case.run(f"foamDictionary -entry sigma/dSigmadT -set {d_sigma_d_t} {PROPERTIES}")
+    case.set(PROPERTIES, "sigma/dSigmadT", f"{d_sigma_d_t}")
     case.run("ldnaFoam")
 
     last = case.times[-1]
@@ -229,8 +227,8 @@ def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Case, hot: float, c
     """
     case = marangoni_layer_case
     case.set("0/T", "internalField", f"uniform {0.5 * (hot + cold)}")
-    case.run(f"foamDictionary -entry boundaryField/hot/value -set 'uniform {hot}' 0/T")
-    case.run(f"foamDictionary -entry boundaryField/cold/value -set 'uniform {cold}' 0/T")
+    case.set("0/T", "boundaryField/hot/value", f"uniform {hot}")
+    case.set("0/T", "boundaryField/cold/value", f"uniform {cold}")
     case.set("system/controlDict", "endTime", f"{REST_END_TIME:g}")
     case.set("system/controlDict", "writeInterval", f"{REST_END_TIME:g}")
     case.run("ldnaFoam")
@@ -247,7 +245,7 @@ def test_marangoni_layer_stays_at_rest(marangoni_layer_case: Case, hot: float, c
     mu = case.scalar(PROPERTIES, "metal/mu")
     d_sigma_d_t = case.scalar(PROPERTIES, "sigma/dSigmadT")
     driven = abs(d_sigma_d_t) * 100.0 / length * depth / (4 * mu)
-    table = case.table(find_tables(case, "force")[0], "force")
+    table = case.table(case.tables_named("force")[0], "force")
     largest_force = np.abs(np.column_stack(
         [table[axis] for axis in ("force_x", "force_y", "force_z")])).max()
     print(f"{reason}: largest Marangoni force {largest_force:.3e} N, largest metal speed "

@@ -23,10 +23,10 @@ import pytest
 
 from ldna import meshing
 from ldna.case import Case
-from ldna.foamcase import RUN_FUNCTIONS
+from ldna.case import RUN_FUNCTIONS
 from ldna.foamdict import read_scalars
+from solver_cases import PROJECT_DIR, TEMPLATE
 
-TEMPLATE = Path(__file__).resolve().parents[1] / "cases" / "ldna"
 #: Relative cell-volume difference of the gmsh and block meshes: both place
 #: the same uniform points, written with the case's 8 significant digits
 GMSH_VOLUME_TOLERANCE = 1e-7
@@ -35,7 +35,7 @@ SKIN_LEVEL = 2
 #: Cubic cells: edge lengths of the refined cells equal within this
 CUBE_TOLERANCE = 0.02
 #: The template's saved quasi-steady weld, which the band test starts from
-STEADY_WELD = Path(__file__).resolve().parents[1] / "cases" / "steadyWeld"
+STEADY_WELD = PROJECT_DIR / "cases" / "steadyWeld"
 #: Cells between metal and gas in the band test: a margin inside the band's
 #: own 0.02-0.98 (system/topoSetDict.band), so that the check does not
 #: repeat its choice

@@ -27,14 +27,11 @@ def test_enthalpy_change_equals_heat_input(energy_box_case: Case, density: str) 
     case = energy_box_case
     props = case / "constant" / "thermophysicalProperties"
     if density == "variable":
-        case.run(f"foamDictionary -entry metal/densityModel -set variable {props}",
-                 log_name="foamDictionary.densityModel")
+        case.set(props, "metal/densityModel", "variable")
     if density == "constant":
-        case.run(f"foamDictionary -entry metal/densityModel -set variable {props}",
-                 log_name="foamDictionary.densityModel")
+        case.set(props, "metal/densityModel", "variable")
         for phase in ("solid", "liquid"):
-            case.run(f"foamDictionary -entry metal/rho/{phase} -set 'constant 7500' {props}",
-                     log_name=f"foamDictionary.{phase}")
+            case.set(props, f"metal/rho/{phase}", "constant 7500")
 
     case.run("ldnaFoam")
 

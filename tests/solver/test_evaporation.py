@@ -124,7 +124,7 @@ def test_recoil_pressure_step_on_processor_faces(laser_slab_case: Case) -> None:
     case = laser_slab_case
     case.set("0/T", "internalField", f"uniform {SURFACE_TEMPERATURE}")
     write_fv_options(case, evaporation_entry("hertzKnudsen", "recoilPressure yes;"))
-    case.run("foamDictionary -entry coeffs/n -set '(1 1 2)' system/decomposeParDict")
+    case.set("system/decomposeParDict", "coeffs/n", "(1 1 2)")
     case.run("decomposePar")
     case.run("ldnaFoam", n_procs=2)
     case.run("reconstructPar -latestTime")

@@ -1,0 +1,84 @@
+"""``ldna accuracy``'s tables without a run: the observed order fitted to
+errors that follow a known power of the cell size, the bond's errors read
+against the bead, the cheapest level within each bound (the runs are in
+tests/solver/test_accuracy.py)."""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from ldna.dev import accuracy
+
+
+@pytest.mark.parametrize("order", [1.0, 2.0])
+def test_order_fit_recovers_a_known_order(order: float) -> None:
+    """Outputs q(h) = q0 (1 + h^p) against the finest run give slope p."""
+    scene = accuracy.SCENES["ldna"]
+    members = []
+    for level, h in enumerate((0.8, 0.4, 0.2, 0.1, 0.001)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"pool_width": 2e-3 * (1 + h**order)}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, exact=None)
+    # The finest run is not exact: its own error biases the fit a little
+    assert study.orders["pool_width"] == pytest.approx(order, rel=0.05)
+    assert math.isnan(study.orders["penetration"])
+
+
+def test_bond_errors_read_against_the_bead() -> None:
+    """Without fusion the reference's penetration, bonded width and dilution
+    are 0: a coarse level's 0.2 mm penetration is then 5 % of the 4 mm bead
+    height, its 1 mm bonded width 10 % of the 10 mm bead width, its dilution
+    of 0.02 an error of 0.02 (against 1); the bead's own metrics against
+    themselves."""
+    scene = accuracy.BeadScene()
+    reference = {"bead_width": 10e-3, "bead_height": 4e-3, "penetration": 0.0,
+                 "bonded_width": 0.0, "dilution": 0.0}
+    coarse = accuracy.Member(level=0, max_co=None, cell_size_mm=0.45)
+    coarse.outputs = {"bead_width": 11e-3, "bead_height": 4e-3, "penetration": 0.2e-3,
+                      "bonded_width": 1e-3, "dilution": 0.02}
+    fine = accuracy.Member(level=1, max_co=None, cell_size_mm=0.225)
+    fine.outputs = reference
+    accuracy.evaluate(scene, [coarse, fine], None)
+    assert coarse.errors["penetration"] == pytest.approx(0.2 / 4)
+    assert coarse.errors["bonded_width"] == pytest.approx(1 / 10)
+    assert coarse.errors["dilution"] == pytest.approx(0.02)
+    assert coarse.errors["bead_width"] == pytest.approx(0.1)
+
+
+def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
+    """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
+    12 % and 4 % on the width, 3 % and 1 % on the height.  The cheapest level
+    within 5 % is 0.5 for the width and 0 for the height; within 10 %, 0.5 and
+    0; the reference itself is never 'within'."""
+    scene = accuracy.BeadScene()
+    reference = {"bead_width": 15e-3, "bead_height": 3e-3}
+    members = []
+    for level, cost, width_error, height_error in ((0.0, 1.0, 0.12, 0.03),
+                                                   (0.5, 3.0, 0.04, 0.01), (1.0, 9.0, 0, 0)):
+        member = accuracy.Member(level=level, max_co=None,
+                                 cell_size_mm=0.45 / 2**level, wall_time=cost, n_procs=1,
+                                 start_time=3.0, end_time=4.0, steady=True, first_steady=4.0)
+        member.outputs = {"bead_width": reference["bead_width"] * (1 + width_error),
+                          "bead_height": reference["bead_height"] * (1 - height_error)}
+        members.append(member)
+    members[-1].outputs = reference
+    study = accuracy.evaluate(scene, members, None)
+    cheapest = accuracy.cheapest_levels(study)
+    assert cheapest["bead_width"] == {"5%": 0.5, "10%": 0.5}
+    assert cheapest["bead_height"] == {"5%": 0.0, "10%": 0.0}
+    assert cheapest["penetration"] == {"5%": None, "10%": None}
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    written = json.loads((tmp_path / "accuracy.json").read_text())
+    first = written["levels"][0]
+    for key in ("level", "cell_mm", "cells", "core_hours_per_simulated_s",
+                "core_hours_to_steady", "steady", "bead_width_mm", "bead_height_mm"):
+        assert key in first
+    # One core for 1 s of wall time per simulated second, all of it to steady
+    assert first["core_hours_per_simulated_s"] == pytest.approx(1.0 / 3600)
+    assert first["core_hours_to_steady"] == pytest.approx(1.0 / 3600)
+    assert first["bead_width_mm"] == pytest.approx(15 * 1.12)
+    assert "finer than tested" in accuracy.markdown(study)

@@ -334,18 +334,9 @@ def _compressible_inter_foam_case(scene: Case, destination: Path, start: Path,
 
 #: The function object that records the metal fraction's range each step
 #: (bound probes only: the timed runs have timeInfo alone)
-ALPHA_RANGE_FUNCTION = """
-    alphaRange
-    {
-        type            fieldMinMax;
-        libs            ("libfieldFunctionObjects.so");
-        fields          (alpha.metal);
-        mode            component;
-        location        no;
-        writeControl    timeStep;
-        writeInterval   1;
-    }
-"""
+ALPHA_RANGE_FUNCTION = ("{ type fieldMinMax; libs (\"libfieldFunctionObjects.so\"); "
+                        "fields (alpha.metal); mode component; location no; "
+                        "writeControl timeStep; writeInterval 1; }")
 
 
 def _alpha_excursion_of_reference(case: Case) -> float:
@@ -353,7 +344,7 @@ def _alpha_excursion_of_reference(case: Case) -> float:
     range recorded; its largest excursion outside [0, 1]."""
     control = case / "system/controlDict"
     timed = control.read_text()
-    control.write_text(timed.replace("functions\n{", "functions\n{" + ALPHA_RANGE_FUNCTION, 1))
+    case.set("system/controlDict", "functions/alphaRange", ALPHA_RANGE_FUNCTION, create=True)
     try:
         case.run("compressibleInterFoam", log_name="compressibleInterFoam.bounds")
         table = case.latest_table("alphaRange", "fieldMinMax")

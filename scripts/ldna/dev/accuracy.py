@@ -421,6 +421,8 @@ class Study:
     reference: dict[str, float]
     reference_name: str
     orders: dict[str, float]
+    #: The member the errors are read against (None: the analytical answer)
+    reference_member: "Member | None" = None
 
 
 def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None) -> Study:
@@ -459,7 +461,8 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
             orders[name] = float(np.polyfit(h, e, 1)[0])
         else:
             orders[name] = math.nan
-    return Study(scene, members, reference, reference_name, orders)
+    return Study(scene, members, reference, reference_name, orders,
+                 None if exact is not None else finest)
 
 
 #: Error bounds a user picks a level for: the cheapest level within each
@@ -592,11 +595,19 @@ def plot(study: Study, path: Path) -> None:
         if not points:
             continue
         cost, error, members = zip(*points)
-        axes.loglog(cost, error, "o-", label=f"{meta[name][0]} (order "
-                    f"{study.orders.get(name, math.nan):.2f})")
+        order = study.orders.get(name, math.nan)
+        axes.loglog(cost, error, "o-", label=meta[name][0]
+                    + (f" (order {order:.2f})" if math.isfinite(order) else ""))
         for c, e, m in zip(cost, error, members):
             axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
                           xytext=(4, 4), fontsize=7)
+    # Where the reference run stands when it is one of the members
+    reference = study.reference_member
+    if reference is not None and math.isfinite(reference.core_hours_per_simulated_s):
+        axes.axvline(reference.core_hours_per_simulated_s, color="grey", ls=":")
+        axes.annotate(f"reference: {reference.name}", (reference.core_hours_per_simulated_s, 0.02),
+                      xycoords=("data", "axes fraction"), rotation=90, fontsize=7,
+                      xytext=(-10, 0), textcoords="offset points", color="grey")
     axes.set_xlabel("core-hours per simulated second")
     axes.set_ylabel(f"relative error against the {study.reference_name}")
     axes.set_title(f"{study.scene.name} scene: accuracy against cost")

@@ -66,16 +66,17 @@ LIQUID_FRACTION_TOLERANCE = "1e-10"
 #: tolerances (the issue's bound; measured 6.9e-9 and 3.3e-8 on 2 and 3
 #: ranks at 10.5 ms, 9.6e-8 for the renumbered serial run)
 IN_FLIGHT_TOLERANCE = 1e-6
-#: Allowed difference relative to each field's scale without droplets at
-#: END_TIME; measured 9e-11 in metal fraction, 2e-11 in T (2 ranks)
+#: Allowed difference relative to each field's scale with tight tolerances:
+#: without droplets at END_TIME (measured 9e-11 in metal fraction, 2e-11 in
+#: T on 2 ranks) and, but for the metal fraction, in flight (measured at
+#: most 4.7e-7, the metal's velocity on 4 ranks)
 FIELD_TOLERANCE = 1e-5
 #: The same with droplets in flight: the issue's bound for the template's
-#: own tolerances, and for the fields other than the metal fraction with
-#: tight ones
+#: own tolerances
 DROPLET_FIELD_TOLERANCE = 1e-3
 #: In flight a rank count's largest difference of metal fraction from the
 #: serial run is at most this multiple of the renumbered serial run's
-#: (measured 0.07 and 0.34 on 2 and 3 ranks): the parallel runs part from
+#: (measured 0.07, 0.34 and 1.7 on 2, 3 and 4 ranks): the parallel runs part from
 #: the serial run no more than round-off makes it part from itself; a
 #: droplet lost, doubled or moved moves whole cells of metal, 1e6 times that
 ROUNDOFF_MULTIPLE = 10
@@ -156,11 +157,17 @@ def parallel_run(serial: Case, directory: Path, n_procs: int) -> Case:
     return parallel
 
 
+#: Each run's cells sorted by their centres, once per run
+_CELL_ORDERS: dict[Path, np.ndarray] = {}
+
+
 def cell_order(case: Case) -> np.ndarray:
     """The case's cells sorted by their centres (to compare renumbered meshes)."""
-    case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
-    centres = case.field("C", "0")
-    return np.lexsort(np.round(centres / 1e-9).T[::-1])
+    if case.path not in _CELL_ORDERS:
+        case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
+        centres = case.field("C", "0")
+        _CELL_ORDERS[case.path] = np.lexsort(np.round(centres / 1e-9).T[::-1])
+    return _CELL_ORDERS[case.path]
 
 
 def largest_difference(a: Case, b: Case, field: str, time: str,
@@ -245,7 +252,7 @@ def test_serial_and_parallel_runs_agree(tmp_path_factory: pytest.TempPathFactory
         assert_fields_agree(serial, parallel, END_TIME, FIELD_TOLERANCE)
         return
 
-    in_flight = assert_fields_agree(serial, parallel, IN_FLIGHT_TIME, DROPLET_FIELD_TOLERANCE,
+    in_flight = assert_fields_agree(serial, parallel, IN_FLIGHT_TIME, FIELD_TOLERANCE,
                                     alpha_tolerance=IN_FLIGHT_TOLERANCE)
     spread = renumbered_difference(serial, serial_run(runs, True, renumbered=True),
                                    IN_FLIGHT_TIME)

@@ -26,7 +26,7 @@ void Foam::surfaceTensionModels::linear::readCoeffs(const dictionary& sigmaDict)
     using ldna::interval;
     namespace limits = ldna::limits;
 
-    ldna::checkKeys(sigmaDict, {"type", "T", "sigma0", "dSigmadT", "Tref"});
+    ldna::checkKeys(sigmaDict, {"type", "T", "alpha", "sigma0", "dSigmadT", "Tref"});
 
     sigma0_ = ldna::getChecked<scalar>
     (

@@ -47,7 +47,7 @@ void Foam::surfaceTensionModels::sahooDebRoy::readCoeffs
     (
         sigmaDict,
         {
-            "type", "T", "activity", "sigmaMelting", "A", "Tmelting",
+            "type", "T", "alpha", "activity", "sigmaMelting", "A", "Tmelting",
             "surfaceExcess", "segregationEntropy", "adsorptionEnthalpy"
         }
     );

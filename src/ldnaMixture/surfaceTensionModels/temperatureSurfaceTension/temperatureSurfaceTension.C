@@ -7,6 +7,8 @@
 #include "checkedInput.H"
 #include "volFields.H"
 #include "metalGasMixture.H"
+#include "fvcSurfaceIntegrate.H"
+#include "linear.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -17,7 +19,8 @@ Foam::surfaceTensionModels::temperatureSurfaceTension::temperatureSurfaceTension
 )
 :
     surfaceTensionModel(mesh),
-    TName_(dict.lookupOrDefault<word>("T", "T"))
+    TName_(dict.lookupOrDefault<word>("T", "T")),
+    alphaName_(dict.lookupOrDefault<word>("alpha", "alpha.metal"))
 {}
 
 
@@ -29,6 +32,7 @@ void Foam::surfaceTensionModels::temperatureSurfaceTension::read
 )
 {
     TName_ = sigmaDict.lookupOrDefault<word>("T", "T");
+    alphaName_ = sigmaDict.lookupOrDefault<word>("alpha", "alpha.metal");
     readCoeffs(sigmaDict);
 
     const scalar Tmin = metalGasMixture::propertyCheckTmin;
@@ -52,6 +56,25 @@ void Foam::surfaceTensionModels::temperatureSurfaceTension::read
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::tmp<Foam::volScalarField>
+Foam::surfaceTensionModels::temperatureSurfaceTension::surfaceTemperature()
+const
+{
+    // Weight of a cell's own temperature where no metal is near: small
+    // against any metal fraction a surface holds, so that it only keeps the
+    // mean defined (and smooth) in pure gas
+    const scalar gasWeight = 1e-6;
+
+    const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
+    const volScalarField& alpha =
+        mesh_.lookupObject<volScalarField>(alphaName_);
+
+    return
+        (fvc::surfaceSum(linearInterpolate(alpha*T)) + gasWeight*T)
+       /(fvc::surfaceSum(linearInterpolate(alpha)) + gasWeight);
+}
+
+
+Foam::tmp<Foam::volScalarField>
 Foam::surfaceTensionModels::temperatureSurfaceTension::sigma() const
 {
     auto tsigma = tmp<volScalarField>::New
@@ -71,21 +94,30 @@ Foam::surfaceTensionModels::temperatureSurfaceTension::sigma() const
     volScalarField& sigmaField = tsigma.ref();
 
     const volScalarField& T = mesh_.lookupObject<volScalarField>(TName_);
+    const scalarField Tsigma(surfaceTemperature()().primitiveField());
 
-    forAll(T, celli)
+    forAll(Tsigma, celli)
     {
-        sigmaField[celli] = sigma(T[celli]);
+        sigmaField[celli] = sigma(Tsigma[celli]);
     }
 
+    // Boundary faces at their own temperature; the faces between
+    // processors take the neighbour cell's sigma(T_sigma) below, as a serial
+    // run's internal faces do
     volScalarField::Boundary& sigmaBf = sigmaField.boundaryFieldRef();
     forAll(sigmaBf, patchi)
     {
+        if (sigmaBf[patchi].coupled())
+        {
+            continue;
+        }
         const scalarField& Tp = T.boundaryField()[patchi];
         forAll(Tp, facei)
         {
             sigmaBf[patchi][facei] = sigma(Tp[facei]);
         }
     }
+    sigmaField.correctBoundaryConditions();
 
     return tsigma;
 }

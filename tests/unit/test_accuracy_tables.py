@@ -49,6 +49,37 @@ def test_bond_errors_read_against_the_bead() -> None:
     assert coarse.errors["bead_width"] == pytest.approx(0.1)
 
 
+def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
+    """No level fuses the substrate: the bond's outputs are 0 everywhere, so
+    they have no error (not 0 %), no order and no cheapest level, and the
+    table says so; a coarse level that does fuse is judged as before."""
+    scene = accuracy.BeadScene()
+    bond = {"penetration": 0.0, "bonded_width": 0.0, "dilution": 0.0}
+    members = []
+    for level, h, width in ((0.0, 0.45, 11e-3), (1.0, 0.225, 10e-3)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": width, "bead_height": 4e-3, **bond}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    assert set(study.not_acting) == set(bond)
+    assert all(math.isnan(members[0].errors[name]) for name in bond)
+    assert members[0].errors["bead_width"] == pytest.approx(0.1)
+    assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
+               for name in bond)
+    text = accuracy.markdown(study)
+    assert "0 at every level, so not judged" in text and "penetration" in text
+    path = tmp_path / "accuracy.json"
+    accuracy.write_json(study, path)
+    data = json.loads(path.read_text())
+    assert set(data["not_acting"]) == set(bond)
+    assert data["levels"][0]["errors"]["penetration"] is None
+
+    members[0].outputs["penetration"] = 0.2e-3
+    study = accuracy.evaluate(scene, members, None)
+    assert "penetration" not in study.not_acting
+    assert members[0].errors["penetration"] == pytest.approx(0.2 / 4)
+
+
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
     12 % and 4 % on the width, 3 % and 1 % on the height.  The cheapest level

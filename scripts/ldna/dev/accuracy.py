@@ -423,6 +423,10 @@ class Study:
     orders: dict[str, float]
     #: The member the errors are read against (None: the analytical answer)
     reference_member: "Member | None" = None
+    #: Outputs that are 0 at every level and in the reference (the bond
+    #: without fusion): nothing to converge, so no error, order or cheapest
+    #: level is read for them
+    not_acting: tuple[str, ...] = ()
 
 
 def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None) -> Study:
@@ -446,10 +450,15 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         scale = 1.0 if scales[name] is None else abs(reference.get(scales[name], math.nan))
         return max(abs(reference.get(name, math.nan)), scale)
 
+    not_acting = tuple(
+        name for name in scene.outputs_meta
+        if exact is None and reference.get(name) == 0
+        and all(m.outputs.get(name) == 0 for m in members))
     for member in members:
         member.errors = {
             name: abs(value - reference[name]) / size(name)
-            if name in reference and size(name) > 0 else math.nan
+            if name in reference and name not in not_acting and size(name) > 0
+            else math.nan
             for name, value in member.outputs.items()
         }
     orders = {}
@@ -462,7 +471,7 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         else:
             orders[name] = math.nan
     return Study(scene, members, reference, reference_name, orders,
-                 None if exact is not None else finest)
+                 None if exact is not None else finest, not_acting)
 
 
 #: Error bounds a user picks a level for: the cheapest level within each
@@ -516,6 +525,7 @@ def write_json(study: Study, path: Path) -> None:
         "levels": levels,
         "orders": {n: finite(study.orders.get(n, math.nan)) for n in meta},
         "cheapest_level": cheapest_levels(study),
+        "not_acting": list(study.not_acting),
     }, indent=2) + "\n")
 
 
@@ -565,14 +575,17 @@ def markdown(study: Study) -> str:
     if any(m.steady is not None for m in study.members):
         lines += ["", "Quasi-steady (`ldna steady`): " + "; ".join(
             f"{m.name} {'yes' if m.steady else 'no (' + m.verdict + ')'}"
-            + (f", first at {m.first_steady:.3g} s ({m.core_hours_to_steady:.2f} core-h "
+            + (f", first at {m.first_steady:.4g} s ({m.core_hours_to_steady:.2f} core-h "
                f"from {m.start_time:g} s)" if m.first_steady is not None else "")
             + f", {m.core_hours_per_simulated_s:.2f} core-h per simulated s"
             for m in study.members) + "."]
     cheapest = cheapest_levels(study)
     lines += ["", "Cheapest level within 5 % / 10 % of the reference: " + "; ".join(
         f"{meta[n][0]} {_level_or_finer(c['5%'])} / {_level_or_finer(c['10%'])}"
-        for n, c in cheapest.items()) + "."]
+        for n, c in cheapest.items() if n not in study.not_acting) + "."]
+    if study.not_acting:
+        lines += ["", "0 at every level, so not judged (no error, order or cheapest "
+                  "level): " + ", ".join(meta[n][0] for n in study.not_acting) + "."]
     return "\n".join(lines) + "\n"
 
 

@@ -15,8 +15,9 @@ difference of a cell's metal fraction from the serial run; the droplets are
 inserted at 9.75 ms with equal masses on any number of ranks): at 10.5 ms
 (0.75 ms of flight) 2 ranks 6.9e-11, 3 ranks 3.7e-8, 4 ranks 1.2e-8, the
 renumbered run 8.4e-9; at 15 ms, just before they land, 4.3e-9, 2.5e-6
-and 4.6e-5, the renumbered run 2.7e-6 (the amplifier: docs/limitations.md).  The flow used to amplify such differences e-fold every
-0.2-0.3 ms of flight (3 ranks 7.2e-3 at 15 ms): the surface tension took
+and 4.6e-5, the renumbered run 2.7e-6 (the amplifier that remains:
+docs/limitations.md).  The flow used to amplify such differences e-fold
+every 0.2-0.3 ms of flight (3 ranks 7.2e-3 at 15 ms): the surface tension took
 half of its value at an interface face from the gas-side cell's
 temperature, which a trace of droplet metal moves by 1e7 K per unit of
 metal fraction.  Evaluated at the metal's temperature

@@ -282,6 +282,26 @@ def _save_state(args: argparse.Namespace) -> int:
     return 0
 
 
+def _case_argument(parser: argparse.ArgumentParser, optional: bool = True) -> None:
+    """The case directory, the current one if ``optional`` and not given."""
+    if optional:
+        parser.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
+    else:
+        parser.add_argument("case", type=_case, help="case directory")
+
+
+def _json_flag(parser: argparse.ArgumentParser, what: str = "the figures as JSON") -> None:
+    """--json: print ``what`` instead of the table."""
+    parser.add_argument("--json", action="store_true", help=f"print {what}")
+
+
+def _section_option(parser: argparse.ArgumentParser, role: str) -> None:
+    """--section: the meltPoolMetrics function object that ``role``."""
+    parser.add_argument("--section", default="meltPoolMetrics",
+                        help=f"the meltPoolMetrics function object {role} "
+                             "(default: meltPoolMetrics)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``ldna`` argument parser with one sub-command per task."""
     parser = argparse.ArgumentParser(prog="ldna", description=__doc__)
@@ -291,7 +311,7 @@ def build_parser() -> argparse.ArgumentParser:
         "mesh-levels",
         help="write system/meshLevels/level0..3 of an LDNA case from its caseParameters",
     )
-    mesh_levels.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
+    _case_argument(mesh_levels)
     mesh_levels.set_defaults(func=_mesh_levels)
 
     bench_laser = commands.add_parser(
@@ -313,7 +333,7 @@ def build_parser() -> argparse.ArgumentParser:
     scale.add_argument("parallel_run", type=_case, help="the same steps on 2 ranks")
     scale.add_argument("--ranks", type=_float_list, default=[1, 2, 4, 8, 16, 32, 64],
                        metavar="N1,N2,...", help="rank counts [1,2,4,8,16,32,64]")
-    scale.add_argument("--json", action="store_true", help="print the figures as JSON")
+    _json_flag(scale)
     scale.set_defaults(func=_scaling)
 
     bench = commands.add_parser(
@@ -332,8 +352,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--np", type=_positive_int, default=2, help="MPI ranks of the parallel run")
     bench.add_argument("--repeats", type=_positive_int, default=5,
                        help="rounds of every variant; the median of each round's ratios counts")
-    bench.add_argument("--json", action="store_true",
-                       help="print the figures as one JSON object instead of a table")
+    _json_flag(bench, "the figures as one JSON object instead of a table")
     bench.set_defaults(func=_bench)
 
     gmsh = commands.add_parser(
@@ -341,7 +360,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="mesh an LDNA case with gmsh (hexahedra, refined band at the surface) "
              "and gmshToFoam instead of blockMesh",
     )
-    gmsh.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
+    _case_argument(gmsh)
     gmsh.add_argument("--level", type=_level, help="resolution level 0..3 [caseParameters]")
     gmsh.set_defaults(func=_gmsh_mesh)
 
@@ -421,7 +440,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="bead metrics and PNG pictures (free surface, transverse and longitudinal "
              "sections) of a case",
     )
-    post.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
+    _case_argument(post)
     post.add_argument("--output", help="folder of the pictures [CASE/pictures]")
     post.add_argument("--time", type=_finite_float, help="time to read [latest]")
     post.add_argument("--surface-height", type=_finite_float, default=0.0,
@@ -436,11 +455,9 @@ def build_parser() -> argparse.ArgumentParser:
         help="validation report of a long run: bead.json (figures, steadiness, mass "
              "balance, cost), bead area against time and the pictures",
     )
-    report.add_argument("case", type=_case, help="case directory")
+    _case_argument(report, optional=False)
     report.add_argument("output", help="folder of the report")
-    report.add_argument("--section", default="meltPoolMetrics",
-                        help="the meltPoolMetrics function object whose section judges the bead "
-                             "(default: meltPoolMetrics)")
+    _section_option(report, "whose section judges the bead")
     report.add_argument("--cpu-seconds", type=float, default=None,
                         help="the solver's CPU time on its master rank [s], for a run "
                              "without the timeInfo table (default: from postProcessing/timeInfo)")
@@ -452,18 +469,14 @@ def build_parser() -> argparse.ArgumentParser:
              "last four windows of whole ripple periods, against 1 %% or the means' noise "
              "(works on a running case)",
     )
-    steady_command.add_argument("case", nargs="?", default=".", type=_case,
-                                help="case directory")
-    steady_command.add_argument("--section", default="meltPoolMetrics",
-                                help="the meltPoolMetrics function object to judge "
-                                     "(default: meltPoolMetrics)")
+    _case_argument(steady_command)
+    _section_option(steady_command, "to judge")
     steady_command.add_argument("--min-window", type=_positive_float, default=None,
                                 metavar="S",
                                 help="shortest averaging window [s]: whole ripple periods of "
                                      "at least this (default 0.25); longer for a bead whose "
                                      "metrics swing more slowly than the windows")
-    steady_command.add_argument("--json", action="store_true",
-                                help="print the verdict and every metric's figures as JSON (SI)")
+    _json_flag(steady_command, "the verdict and every metric's figures as JSON (SI)")
     steady_command.set_defaults(func=_steady)
 
     means = commands.add_parser(
@@ -471,12 +484,11 @@ def build_parser() -> argparse.ArgumentParser:
         help="time-weighted means (and largest values) of the section's metrics and the "
              "laser's absorbed power over a span of a run (SI)",
     )
-    means.add_argument("case", type=_case, help="case directory")
+    _case_argument(means, optional=False)
     means.add_argument("start", type=float, help="the span's start [s]")
     means.add_argument("end", type=float, help="the span's end [s]")
-    means.add_argument("--section", default="meltPoolMetrics",
-                       help="the meltPoolMetrics function object (default: meltPoolMetrics)")
-    means.add_argument("--json", action="store_true", help="print the figures as JSON")
+    _section_option(means, "to read")
+    _json_flag(means)
     means.set_defaults(func=_means)
 
     start = commands.add_parser(
@@ -484,8 +496,8 @@ def build_parser() -> argparse.ArgumentParser:
         help="write an estimate of the steady weld (the mass balance's deposit, a moving-"
              "section temperature) into the time-0 fields of a meshed, set case",
     )
-    start.add_argument("case", nargs="?", default=".", type=_case, help="case directory")
-    start.add_argument("--json", action="store_true", help="print the estimate's figures as JSON")
+    _case_argument(start)
+    _json_flag(start, "the estimate's figures as JSON")
     start.set_defaults(func=_steady_start)
 
     save = commands.add_parser(
@@ -507,7 +519,7 @@ def build_parser() -> argparse.ArgumentParser:
              "comments, #include and #eval (foamDictionary -set expands them); an entry "
              "the file does not have is an error unless --create",
     )
-    set_entry.add_argument("case", type=_case, help="case directory")
+    _case_argument(set_entry, optional=False)
     set_entry.add_argument("file", help="dictionary, relative to the case (system/controlDict)")
     set_entry.add_argument("entry", help="entry, scoped with slashes (functions/x/writeControl)")
     set_entry.add_argument("value", help="its new value: 0.5, '(3 1 1)', '{ type wall; }'")
@@ -529,9 +541,7 @@ def build_parser() -> argparse.ArgumentParser:
     unpack.add_argument("run", help="folder to unpack into; must not exist")
     unpack.set_defaults(func=_unpack)
 
-    post.add_argument("--json", action="store_true",
-                      help="print the bead figures as one JSON object (mm, mm2, K, deg) "
-                           "instead of the table")
+    _json_flag(post, "the bead figures as one JSON object (mm, mm2, K, deg) instead of the table")
     post.set_defaults(func=_post)
     return parser
 

@@ -9,6 +9,7 @@ tests exercise what users run, and runs OpenFOAM's applications on it
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Callable
 
 import pytest
 
@@ -24,28 +25,23 @@ def stefan_case(tmp_path: Path) -> Case:
     return case
 
 
-@pytest.fixture
-def energy_box_case(tmp_path: Path) -> Case:
-    """The closed box, metal below argon, with its heater zone."""
-    return meshed_test_case("energyBox", tmp_path)
+def meshed_case_fixture(name: str, description: str) -> Callable[[Path], Case]:
+    """A fixture giving tests/cases/<name>, prepared and meshed (not yet run)."""
+    @pytest.fixture
+    def fixture(tmp_path: Path) -> Case:
+        return meshed_test_case(name, tmp_path)
+    fixture.__doc__ = description
+    return fixture
 
 
-@pytest.fixture
-def laser_slab_case(tmp_path: Path) -> Case:
-    """The box with a flat 316L slab under argon, for the laser tests."""
-    return meshed_test_case("laserSlab", tmp_path)
-
-
-@pytest.fixture
-def marangoni_layer_case(tmp_path: Path) -> Case:
-    """The 2D liquid layer between a hot and a cold wall, no gravity."""
-    return meshed_test_case("marangoniLayer", tmp_path)
-
-
-@pytest.fixture
-def static_droplet_case(tmp_path: Path) -> Case:
-    """The 2D box with a liquid cylinder of exact cut-cell fractions."""
-    return meshed_test_case("staticDroplet", tmp_path)
+energy_box_case = meshed_case_fixture(
+    "energyBox", "The closed box, metal below argon, with its heater zone.")
+laser_slab_case = meshed_case_fixture(
+    "laserSlab", "The box with a flat 316L slab under argon, for the laser tests.")
+marangoni_layer_case = meshed_case_fixture(
+    "marangoniLayer", "The 2D liquid layer between a hot and a cold wall, no gravity.")
+static_droplet_case = meshed_case_fixture(
+    "staticDroplet", "The 2D box with a liquid cylinder of exact cut-cell fractions.")
 
 
 @pytest.fixture

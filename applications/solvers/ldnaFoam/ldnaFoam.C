@@ -51,6 +51,7 @@ Description
 #include "fvOptions.H"
 #include "upwind.H"
 #include "checkedInput.H"
+#include "fieldIO.H"
 #include "profiling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

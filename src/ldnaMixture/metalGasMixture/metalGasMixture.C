@@ -5,6 +5,7 @@
 
 #include "metalGasMixture.H"
 #include "checkedInput.H"
+#include "fieldIO.H"
 #include "physicalLimits.H"
 #include "layeredConductivity.H"
 #include "fvc.H"
@@ -155,14 +156,7 @@ Foam::metalGasMixture::metalGasMixture
     ),
     liquidFraction_
     (
-        IOobject
-        (
-            "liquidFraction",
-            U.time().timeName(),
-            U.mesh(),
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
+        ldna::handedOn("liquidFraction", U.mesh()),
         U.mesh(),
         dimensionedScalar(dimless, Zero)
     ),
@@ -190,14 +184,7 @@ Foam::metalGasMixture::metalGasMixture
     ),
     rho2_
     (
-        IOobject
-        (
-            IOobject::groupName("rho", phase2Name()),
-            U.time().timeName(),
-            U.mesh(),
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
+        ldna::handedOn(IOobject::groupName("rho", phase2Name()), U.mesh()),
         U.mesh(),
         dimensionedScalar(dimDensity, Zero)
     ),

@@ -6,35 +6,8 @@
 #include "metalSources.H"
 #include "metalInsertion.H"
 #include "optionsImplementing.H"
+#include "fieldIO.H"
 #include "fvMatrices.H"
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-// A field handed on to the next step: written with the solution, read back
-// on a restart
-Foam::IOobject handedOn(const Foam::word& name, const Foam::fvMesh& mesh)
-{
-    return Foam::IOobject
-    (
-        name,
-        mesh.time().timeName(),
-        mesh,
-        Foam::IOobject::READ_IF_PRESENT,
-        Foam::IOobject::AUTO_WRITE
-    );
-}
-
-// A field of the current step only
-Foam::IOobject stepOnly(const Foam::word& name, const Foam::fvMesh& mesh)
-{
-    return Foam::IOobject(name, mesh.time().timeName(), mesh);
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -43,49 +16,49 @@ Foam::metalSources::metalSources(const fvMesh& mesh)
     mesh_(mesh),
     massSource_
     (
-        stepOnly("metalMassSource", mesh),
+        ldna::stepOnly("metalMassSource", mesh),
         mesh,
         dimensionedScalar(dimDensity/dimTime, Zero)
     ),
     volumeSourceInFlux_
     (
-        handedOn("metalVolumeSourceInFlux", mesh),
+        ldna::handedOn("metalVolumeSourceInFlux", mesh),
         mesh,
         dimensionedScalar(dimless/dimTime, Zero)
     ),
     volumeSourceInAlpha_
     (
-        stepOnly("metalVolumeSourceInAlpha", mesh),
+        ldna::stepOnly("metalVolumeSourceInAlpha", mesh),
         mesh,
         dimensionedScalar(dimless/dimTime, Zero)
     ),
     volumeCorrection_
     (
-        handedOn("metalVolumeCorrection", mesh),
+        ldna::handedOn("metalVolumeCorrection", mesh),
         mesh,
         dimensionedScalar(dimless, Zero)
     ),
     deferredVolume_
     (
-        handedOn("deferredMetalVolume", mesh),
+        ldna::handedOn("deferredMetalVolume", mesh),
         mesh,
         dimensionedScalar(dimless, Zero)
     ),
     deferredVolumeNext_
     (
-        stepOnly("deferredMetalVolumeNext", mesh),
+        ldna::stepOnly("deferredMetalVolumeNext", mesh),
         mesh,
         dimensionedScalar(dimless, Zero)
     ),
     deferredEnthalpy_
     (
-        handedOn("deferredMetalEnthalpy", mesh),
+        ldna::handedOn("deferredMetalEnthalpy", mesh),
         mesh,
         dimensionedScalar(dimEnergy/dimMass, Zero)
     ),
     addedVolume_
     (
-        stepOnly("addedMetalVolume", mesh),
+        ldna::stepOnly("addedMetalVolume", mesh),
         mesh,
         dimensionedScalar(dimless/dimTime, Zero)
     )

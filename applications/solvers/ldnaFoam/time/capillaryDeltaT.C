@@ -47,60 +47,54 @@ Foam::scalar Foam::ldna::capillaryDeltaT
     const surfaceScalarField normalCos(mag(mixture.nHatf())/mesh.magSf());
     const surfaceScalarField& deltaCoeffs = mesh.deltaCoeffs();
 
-    auto faceLimit = [&]
+    // The limit over one set of faces, given their values
+    auto limitOver = [&]
     (
-        const scalar interface,
-        const scalar cosNormal,
-        const scalar rhoMean,
-        const scalar sigma,
-        const scalar dc
+        const scalarField& interface,
+        const scalarField& cosNormal,
+        const scalarField& rhoMean,
+        const scalarField& sigma,
+        const scalarField& dc
     )
     {
-        if (interface > 0 && sigma > 0 && cosNormal <= largestNormalCos)
+        forAll(interface, facei)
         {
-            return Foam::sqrt
+            if
             (
-                rhoMean/(constant::mathematical::twoPi*sigma*pow3(dc))
-            );
+                interface[facei] > 0 && sigma[facei] > 0
+             && cosNormal[facei] <= largestNormalCos
+            )
+            {
+                capillaryDeltaT = min
+                (
+                    capillaryDeltaT,
+                    Foam::sqrt
+                    (
+                        rhoMean[facei]
+                       /(
+                            constant::mathematical::twoPi*sigma[facei]
+                           *pow3(dc[facei])
+                        )
+                    )
+                );
+            }
         }
-        return GREAT;
     };
 
-    forAll(deltaCoeffs, facei)
-    {
-        capillaryDeltaT = min
-        (
-            capillaryDeltaT,
-            faceLimit
-            (
-                interfacef[facei], normalCos[facei], rhoMeanf[facei],
-                sigmaf[facei], deltaCoeffs[facei]
-            )
-        );
-    }
+    limitOver(interfacef, normalCos, rhoMeanf, sigmaf, deltaCoeffs);
 
     // Faces between processors count as internal faces of the whole mesh
     forAll(mesh.boundary(), patchi)
     {
-        if (!mesh.boundary()[patchi].coupled())
+        if (mesh.boundary()[patchi].coupled())
         {
-            continue;
-        }
-        const scalarField& interfacep = interfacef.boundaryField()[patchi];
-        const scalarField& cosp = normalCos.boundaryField()[patchi];
-        const scalarField& sigmap = sigmaf.boundaryField()[patchi];
-        const scalarField& rhoMeanp = rhoMeanf.boundaryField()[patchi];
-        const scalarField& dcp = deltaCoeffs.boundaryField()[patchi];
-        forAll(interfacep, facei)
-        {
-            capillaryDeltaT = min
+            limitOver
             (
-                capillaryDeltaT,
-                faceLimit
-                (
-                    interfacep[facei], cosp[facei], rhoMeanp[facei],
-                    sigmap[facei], dcp[facei]
-                )
+                interfacef.boundaryField()[patchi],
+                normalCos.boundaryField()[patchi],
+                rhoMeanf.boundaryField()[patchi],
+                sigmaf.boundaryField()[patchi],
+                deltaCoeffs.boundaryField()[patchi]
             );
         }
     }

@@ -27,10 +27,6 @@ const Foam::scalar defaultTransmittance = Foam::exp(-4.0);
 const Foam::scalar defaultPathLength = 1e-3;
 const Foam::scalar maxPathLength = 1;
 
-// As gaussianSurface: 64 pixels over 4 beam radii
-const Foam::label defaultRaysAcross = 64;
-const Foam::label maxRaysAcross = 1024;
-
 } // End anonymous namespace
 
 
@@ -42,9 +38,8 @@ Foam::laserAbsorptionModels::beerLambert::beerLambert
     const fvMesh& mesh
 )
 :
-    laserAbsorptionModel(typeName, dict, mesh),
-    mu_(0),
-    nRaysAcross_(defaultRaysAcross)
+    pixelAbsorptionModel(typeName, dict, mesh),
+    mu_(0)
 {
     read(dict);
 }
@@ -75,25 +70,9 @@ void Foam::laserAbsorptionModels::beerLambert::read(const dictionary& dict)
         "the attenuation coefficient -ln(Tr)/l it gives"
     );
 
-    nRaysAcross_ = ldna::getCheckedOrDefault<label>
-    (
-        coeffs_, "nRaysAcross", interval::closed(2, maxRaysAcross),
-        defaultRaysAcross
-    );
+    readRaysAcross();
 
     Info<< "    attenuation coefficient " << mu_ << " 1/m" << endl;
-}
-
-
-void Foam::laserAbsorptionModels::beerLambert::rays
-(
-    const laserBeam& beam,
-    const label,
-    DynamicList<vector2D>& across,
-    DynamicList<scalar>& shares
-) const
-{
-    beam.pixels(nRaysAcross_, across, shares);
 }
 
 

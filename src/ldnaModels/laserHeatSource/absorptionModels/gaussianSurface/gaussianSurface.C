@@ -24,17 +24,6 @@ namespace laserAbsorptionModels
 }
 
 
-namespace
-{
-
-// Pixels across the beam diameter: 64 over 4 beam radii resolve the
-// Gaussian on cells down to a sixteenth of the radius
-const Foam::label defaultRaysAcross = 64;
-const Foam::label maxRaysAcross = 1024;
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::laserAbsorptionModels::gaussianSurface::gaussianSurface
@@ -44,8 +33,7 @@ Foam::laserAbsorptionModels::gaussianSurface::gaussianSurface
     const fvMesh& mesh
 )
 :
-    laserAbsorptionModel(modelType, dict, mesh),
-    nRaysAcross_(defaultRaysAcross)
+    pixelAbsorptionModel(modelType, dict, mesh)
 {}
 
 
@@ -70,23 +58,7 @@ void Foam::laserAbsorptionModels::gaussianSurface::read
 {
     laserAbsorptionModel::read(dict);
     ldna::checkKeys(coeffs_, {"nRaysAcross"});
-    nRaysAcross_ = ldna::getCheckedOrDefault<label>
-    (
-        coeffs_, "nRaysAcross", ldna::interval::closed(2, maxRaysAcross),
-        defaultRaysAcross
-    );
-}
-
-
-void Foam::laserAbsorptionModels::gaussianSurface::rays
-(
-    const laserBeam& beam,
-    const label,
-    DynamicList<vector2D>& across,
-    DynamicList<scalar>& shares
-) const
-{
-    beam.pixels(nRaysAcross_, across, shares);
+    readRaysAcross();
 }
 
 

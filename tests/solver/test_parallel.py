@@ -27,9 +27,10 @@ hotter now differs by 2.2e-9 at 15 ms, where it differed by 1.2e-6.
 So the fields are compared in flight, at 10.5 ms: within the issue's 1e-6
 with tight tolerances, within a small multiple of the renumbered serial
 run's difference, and within 1e-3 with the template's own tolerances (one
-rank count); at 15 ms the masses, and that no cell differs by as much as
-half of it in metal; and the perturbed serial run within 1e-6 until
-the droplets land.  Without droplets the fields agree at 15 ms.  The
+rank count); at 15 ms, just before landing, the masses and every cell's
+metal fraction within 1e-4 with tight tolerances and within 1e-3 with the
+template's; and the perturbed serial run within 1e-6 until the droplets
+land.  Without droplets the fields agree at 15 ms.  The
 metal fraction and the pressure are compared everywhere, temperature and
 velocity in the metal: a gas cell's temperature is that of the trace of
 metal it holds (one temperature per cell).
@@ -73,8 +74,9 @@ IN_FLIGHT_TOLERANCE = 1e-6
 #: T on 2 ranks) and, but for the metal fraction, in flight (measured at
 #: most 2.1e-8, the metal's velocity on 3 ranks)
 FIELD_TOLERANCE = 1e-5
-#: The same with droplets in flight: the issue's bound for the template's
-#: own tolerances
+#: The same with droplets in flight, to just before they land: the issue's
+#: bound for the template's own tolerances (measured on 3 ranks 1.4e-6 at
+#: 10.5 ms and 2.4e-4 at 15 ms in metal fraction)
 DROPLET_FIELD_TOLERANCE = 1e-3
 #: In flight a rank count's largest difference of metal fraction from the
 #: serial run is at most this multiple of the renumbered serial run's
@@ -89,11 +91,14 @@ ROUNDOFF_MULTIPLE = 10
 #: differ by no more than what the runs let through the boundaries
 #: differently (trace metal of the droplets leaves through the atmosphere,
 #: 5.6e-6 kg/s at 15 ms, and its rate follows the runs' differing traces:
-#: 1.6e-9 of the metal mass measured, all of it that flow), and no cell
-#: differs by as much as half of it in metal (a droplet lost, doubled or
-#: put a cell away moves whole cells of metal)
+#: 1.6e-9 of the metal mass measured, all of it that flow)
 MASS_AGREEMENT = 1e-9
-DROPLET_DISPLACEMENT = 0.5
+#: Just before landing, with tight tolerances, no cell's metal fraction
+#: differs by 1e-4: round-off of any seed has grown to 1e-6 - 1e-5 by then
+#: (measured 4.3e-9, 2.5e-6 and 4.6e-5 on 2, 3 and 4 ranks, 2.7e-6 for the
+#: renumbered serial run; docs/limitations.md), while a droplet displaced
+#: by a tenth of a cell changes the cells at its edge by about 0.1
+LANDING_TOLERANCE = 1e-4
 
 #: Effects of the template compared, besides the droplets
 EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosity"]
@@ -240,7 +245,7 @@ def test_serial_and_parallel_runs_agree(tmp_path_factory: pytest.TempPathFactory
                                         tmp_path: Path, with_droplets: bool,
                                         n_procs: int) -> None:
     """Tight tolerances: in flight within 1e-6 and within the serial run's
-    own round-off spread; the masses and no displaced metal before landing."""
+    own round-off spread; the masses, and within 1e-4 just before landing."""
     runs = tmp_path_factory.getbasetemp() / "parallelSerial"
     serial = serial_run(runs, with_droplets)
     parallel = parallel_run(serial, tmp_path, n_procs)
@@ -265,7 +270,7 @@ def test_serial_and_parallel_runs_agree(tmp_path_factory: pytest.TempPathFactory
     assert in_flight < ROUNDOFF_MULTIPLE * spread
     at_end, _ = largest_difference(serial, parallel, "alpha.metal", END_TIME)
     print(f"metal fraction at {END_TIME} s: largest difference {at_end:.2e}")
-    assert at_end < DROPLET_DISPLACEMENT
+    assert at_end < LANDING_TOLERANCE
 
 
 #: The droplets' temperature [K] of the perturbed serial run: the
@@ -298,14 +303,15 @@ def test_droplet_flight_does_not_amplify_round_off(
 def test_template_tolerances_on_three_ranks(tmp_path_factory: pytest.TempPathFactory,
                                             tmp_path: Path) -> None:
     """The template's own tolerances, 3 ranks: in flight within 1e-3 of each
-    field's scale; the masses and no displaced metal before landing."""
+    field's scale; the masses, and the metal fraction within 1e-3 just
+    before landing."""
     serial = serial_run(tmp_path_factory.getbasetemp() / "parallelSerial", True, tight=False)
     parallel = parallel_run(serial, tmp_path, 3)
     assert_masses_agree(serial, parallel, True)
     assert_fields_agree(serial, parallel, IN_FLIGHT_TIME, DROPLET_FIELD_TOLERANCE)
     at_end, _ = largest_difference(serial, parallel, "alpha.metal", END_TIME)
     print(f"metal fraction at {END_TIME} s: largest difference {at_end:.2e}")
-    assert at_end < DROPLET_DISPLACEMENT
+    assert at_end < DROPLET_FIELD_TOLERANCE
 
 
 #: The saved quasi-steady weld and the span continued from it [s]: three

@@ -31,6 +31,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import _foamcase as foamcase
 from .foamdict import read_scalars, set_entry
 
 #: Process-zone cell size at level 0 [mm]: 1.5 cells on the radius of the
@@ -251,8 +252,8 @@ def mesh_case(case: Path, start: tuple[Path, float] | None = None) -> int:
     times by topoSet + refineMesh, and with ``start`` = (run, time) the band
     where that state has its surface, pool and droplets split ``bandLevel``
     times); return the number of cells."""
-    from .case import RUN_FUNCTIONS, Case
-    run = Case(case).run
+    def run(command: str, log_name: str | None = None) -> None:
+        foamcase.run(Path(case), command, log_name=log_name)
 
     run("blockMesh")
     run("snappyHexMesh -overwrite")
@@ -262,8 +263,8 @@ def mesh_case(case: Path, start: tuple[Path, float] | None = None) -> int:
     start_case, start_time = start if start else ("", 0.0)
     # The shell step of Allrun (bin/tools/RunFunctions); without a start it
     # refuses a bandLevel above 0
-    run(f". '{RUN_FUNCTIONS}' && refineBand '{Path(start_case).resolve() if start else ''}' "
-              f"{start_time:g}", log_name="refineBand")
+    run(f". '{foamcase.RUN_FUNCTIONS}' && refineBand "
+        f"'{Path(start_case).resolve() if start else ''}' {start_time:g}", log_name="refineBand")
     return cell_count(case)
 
 

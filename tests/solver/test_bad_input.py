@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from solver_cases import assert_named_error
+from solver_cases import PROJECT_DIR, assert_named_error
 from ldna.case import Case
 
 
@@ -19,18 +19,15 @@ FV_SOLUTION = "system/fvSolution"
 FV_SCHEMES = "system/fvSchemes"
 ALPHA_CONTROLS = 'solvers/"alpha.metal.*"'
 
-VALID_FV_OPTIONS = """FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }
-
-enthalpyPorosity
-{
-    type                enthalpyPorosity;
-    selectionMode       all;
-    mushyZoneConstant   1e8;
-    porosityEpsilon     1e-3;
-    weldingSpeed        constant 0.0075;
-    weldingDirection    (1 0 0);
-}
-"""
+#: The valid fvOptions: the example of enthalpyPorosity's header (its Usage),
+#: so that the documented dictionary is the one that must run
+ENTHALPY_POROSITY_HEADER = (PROJECT_DIR / "src" / "ldnaModels" / "enthalpyPorosity"
+                            / "enthalpyPorosity.H")
+VALID_FV_OPTIONS = (
+    "FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n\n"
+    + ENTHALPY_POROSITY_HEADER.read_text().split("\\verbatim\n", 1)[1]
+    .split("\\endverbatim", 1)[0]
+)
 
 # (description, file, entry, new value or None to remove, expected texts)
 BAD_INPUTS = [

@@ -113,3 +113,71 @@ def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     assert first["core_hours_to_steady"] == pytest.approx(1.0 / 3600)
     assert first["bead_width_mm"] == pytest.approx(15 * 1.12)
     assert "finer than tested" in accuracy.markdown(study)
+
+
+@pytest.mark.parametrize("cells", [(0.225, 0.318, 0.45), (0.2, 0.3, 0.36)])
+@pytest.mark.parametrize("order", [1.0, 1.5, 2.0])
+def test_three_levels_recover_order_and_error(cells: tuple[float, float, float],
+                                              order: float) -> None:
+    """Outputs q(h) = q0 + C h^p on three levels, with equal and unequal
+    refinement ratios: the estimate finds p and q0, and the finest level's
+    index is the safety factor times its true relative error."""
+    q0, c = 10.0, 2.0
+    values = tuple(q0 + c * h**order for h in cells)
+    estimate = accuracy.three_level_estimate(cells, values, abs(values[0]))
+    assert estimate.status == "converging"
+    assert estimate.order == pytest.approx(order, rel=1e-6)
+    assert estimate.extrapolated == pytest.approx(q0, rel=1e-9)
+    true_error = (values[0] - q0) / values[0]
+    assert estimate.gci == pytest.approx(accuracy.GCI_SAFETY_FACTOR * true_error, rel=1e-6)
+
+
+def test_three_levels_count_a_high_order_as_second() -> None:
+    """An observed order of 4 is counted as 2 in the index: the band is then
+    wider than 1.25 times the true error, by (r^4 - 1)/(r^2 - 1) = r^2 + 1."""
+    cells, q0 = (0.225, 0.318, 0.45), 4.0
+    values = tuple(q0 + 3.0 * h**4 for h in cells)
+    estimate = accuracy.three_level_estimate(cells, values, abs(values[0]))
+    assert estimate.order == pytest.approx(4.0, rel=1e-6)
+    ratio = cells[1] / cells[0]
+    true_error = (values[0] - q0) / values[0]
+    assert estimate.gci == pytest.approx(
+        accuracy.GCI_SAFETY_FACTOR * true_error * (ratio**2 + 1), rel=1e-6)
+
+
+@pytest.mark.parametrize("values,status", [
+    ((7.5, 10.1, 13.4), "converging"),
+    ((7.5, 12.0, 9.0), "oscillating"),
+    ((5.0, 9.0, 10.0), "diverging"),
+    ((3.0, 3.0, 3.0), "unchanged"),
+])
+def test_three_levels_say_when_they_do_not_converge(values: tuple[float, float, float],
+                                                    status: str) -> None:
+    """Differences that change sign oscillate; differences that grow towards
+    the finest level diverge; neither has an order or an index."""
+    estimate = accuracy.three_level_estimate((0.225, 0.318, 0.45), values, abs(values[0]))
+    assert estimate.status == status
+    if status in ("oscillating", "diverging"):
+        assert math.isnan(estimate.order) and math.isnan(estimate.gci)
+
+
+def test_a_study_of_three_levels_reports_them(tmp_path: Path) -> None:
+    """A bead study of three levels carries the estimate of each acting output
+    into its table and JSON (in the table's units); the bond, 0 everywhere, is
+    left out."""
+    scene = accuracy.BeadScene()
+    members = []
+    for level, h in ((0.0, 0.45), (0.5, 0.318), (1.0, 0.225)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h), "bead_height": 4e-3,
+                          "penetration": 0.0, "bonded_width": 0.0, "dilution": 0.0}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    assert study.three_level is not None
+    assert set(study.three_level) == {"bead_width", "bead_height"}
+    assert study.three_level["bead_width"].order == pytest.approx(1.0, rel=1e-6)
+    assert study.three_level["bead_height"].status == "unchanged"
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    written = json.loads((tmp_path / "accuracy.json").read_text())["three_level"]
+    assert written["bead_width"]["extrapolated"] == pytest.approx(7.0, rel=1e-9)
+    assert "three finest levels" in accuracy.markdown(study)

@@ -427,6 +427,89 @@ class Study:
     #: without fusion): nothing to converge, so no error, order or cheapest
     #: level is read for them
     not_acting: tuple[str, ...] = ()
+    #: The three finest levels read without a reference (None with fewer)
+    three_level: "dict[str, ThreeLevel] | None" = None
+
+
+#: Safety factor of the grid convergence index for three grids (Roache 1994;
+#: Celik et al., J. Fluids Eng. 130 (2008) 078001)
+GCI_SAFETY_FACTOR = 1.25
+#: Highest order the index counts: the schemes are second order at best, so a
+#: higher observed order is the levels' differences shrinking by chance, not
+#: an error bound that small (Roache's advice)
+GCI_MAX_ORDER = 2.0
+
+
+@dataclass(frozen=True)
+class ThreeLevel:
+    """What the three finest levels say of one output on their own: whether
+    their differences shrink (``converging``), change sign
+    (``oscillating``) or grow (``diverging``); for converging ones the
+    observed order, the output extrapolated to zero cell size and the finest
+    level's grid convergence index (its relative error band)."""
+
+    status: str
+    order: float = math.nan
+    extrapolated: float = math.nan
+    gci: float = math.nan
+
+
+#: Bracket of the observed order the three-level estimate searches
+THREE_LEVEL_ORDERS = (1e-6, 50.0)
+
+
+def three_level_estimate(cells: tuple[float, float, float], values: tuple[float, float, float],
+                         scale: float) -> ThreeLevel:
+    """Celik et al. (2008)'s three-grid estimate on cell sizes ``cells``
+    (finest first) and their outputs ``values``; the index relative to
+    ``scale`` (the output's size, as its errors are read).
+
+    The order p is the one for which q0 + C h^p passes through the three
+    points: (h3^p - h2^p)/(h2^p - h1^p) = e32/e21 (Celik's equation for
+    any refinement ratios), found by bisection.  That ratio grows with p from
+    ln(r32)/ln(r21) at p -> 0, so differences of one sign converge only
+    above it; below it they shrink more slowly than any positive order
+    (``diverging``), and of opposite signs they ``oscillate``."""
+    (h1, h2, h3), (q1, q2, q3) = cells, values
+    if not (0 < h1 < h2 < h3):
+        raise ValueError(f"cell sizes {cells} are not positive, finest first and distinct")
+    e21, e32 = q2 - q1, q3 - q2
+    if e21 == 0 and e32 == 0:
+        return ThreeLevel("unchanged", extrapolated=q1, gci=0.0)
+    if e21 == 0:
+        return ThreeLevel("converging", order=math.inf, extrapolated=q1, gci=0.0)
+    ratio = e32 / e21
+    if ratio < 0:
+        return ThreeLevel("oscillating")
+
+    def spread(order: float) -> float:
+        return (h3**order - h2**order) / (h2**order - h1**order)
+
+    low, high = THREE_LEVEL_ORDERS
+    if not ratio > spread(low):
+        return ThreeLevel("diverging")
+    if ratio >= spread(high):
+        order = high
+    else:
+        for _ in range(200):
+            middle = 0.5 * (low + high)
+            low, high = (middle, high) if spread(middle) < ratio else (low, middle)
+        order = 0.5 * (low + high)
+    r21 = h2 / h1
+    extrapolated = (r21**order * q1 - q2) / (r21**order - 1)
+    counted = min(order, GCI_MAX_ORDER)
+    gci = GCI_SAFETY_FACTOR * abs(e21) / scale / (r21**counted - 1) if scale > 0 else math.nan
+    return ThreeLevel("converging", order, extrapolated, gci)
+
+
+def error_scale(scales: dict[str, str | None], outputs: dict[str, float], name: str) -> float:
+    """What an error of ``name`` is read against: the output itself in
+    ``outputs``, or at least the bead's size in its direction
+    (``scales[name]``, an output's name; None: 1)."""
+    if name not in scales:
+        return abs(outputs.get(name, math.nan))
+    scale = 1.0 if scales[name] is None else abs(outputs.get(scales[name], math.nan))
+    return max(abs(outputs.get(name, math.nan)), scale)
 
 
 def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None) -> Study:
@@ -443,12 +526,7 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
     scales = getattr(scene, "error_scales", {})
 
     def size(name: str) -> float:
-        """What an error is read against: the output itself, or at least the
-        bead's size in its direction (``error_scales``; None: 1)."""
-        if name not in scales:
-            return abs(reference.get(name, math.nan))
-        scale = 1.0 if scales[name] is None else abs(reference.get(scales[name], math.nan))
-        return max(abs(reference.get(name, math.nan)), scale)
+        return error_scale(scales, reference, name)
 
     not_acting = tuple(
         name for name in scene.outputs_meta
@@ -470,8 +548,20 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
             orders[name] = float(np.polyfit(h, e, 1)[0])
         else:
             orders[name] = math.nan
+    three = None
+    by_size = sorted(at_finest_co, key=lambda m: m.cell_size_mm)
+    if len(by_size) >= 3 and len({m.cell_size_mm for m in by_size[:3]}) == 3:
+        finest3 = by_size[:3]
+        three = {}
+        for name in scene.outputs_meta:
+            values = [m.outputs.get(name, math.nan) for m in finest3]
+            if name in not_acting or not all(math.isfinite(v) for v in values):
+                continue
+            three[name] = three_level_estimate(
+                tuple(m.cell_size_mm for m in finest3), tuple(values),
+                error_scale(scales, finest3[0].outputs, name))
     return Study(scene, members, reference, reference_name, orders,
-                 None if exact is not None else finest, not_acting)
+                 None if exact is not None else finest, not_acting, three)
 
 
 #: Error bounds a user picks a level for: the cheapest level within each
@@ -526,6 +616,11 @@ def write_json(study: Study, path: Path) -> None:
         "orders": {n: finite(study.orders.get(n, math.nan)) for n in meta},
         "cheapest_level": cheapest_levels(study),
         "not_acting": list(study.not_acting),
+        # In the output's units; the index relative to the output's size
+        "three_level": None if study.three_level is None else {
+            n: {"status": t.status, "order": finite(t.order),
+                "extrapolated": finite(t.extrapolated * meta[n][2]), "gci": finite(t.gci)}
+            for n, t in study.three_level.items()},
     }, indent=2) + "\n")
 
 
@@ -583,10 +678,23 @@ def markdown(study: Study) -> str:
     lines += ["", "Cheapest level within 5 % / 10 % of the reference: " + "; ".join(
         f"{meta[n][0]} {_level_or_finer(c['5%'])} / {_level_or_finer(c['10%'])}"
         for n, c in cheapest.items() if n not in study.not_acting) + "."]
+    if study.three_level:
+        lines += ["", "The three finest levels on their own (Celik et al. 2008; the grid "
+                  f"convergence index with safety factor {GCI_SAFETY_FACTOR:g}, orders above "
+                  f"{GCI_MAX_ORDER:g} counted as {GCI_MAX_ORDER:g}): " + "; ".join(
+                      f"{meta[n][0]} {_three_level_text(t, meta[n])}"
+                      for n, t in study.three_level.items()) + "."]
     if study.not_acting:
         lines += ["", "0 at every level, so not judged (no error, order or cheapest "
                   "level): " + ", ".join(meta[n][0] for n in study.not_acting) + "."]
     return "\n".join(lines) + "\n"
+
+
+def _three_level_text(estimate: ThreeLevel, meta: tuple[str, str, float]) -> str:
+    if estimate.status != "converging":
+        return estimate.status
+    return (f"order {estimate.order:.2f}, extrapolated {estimate.extrapolated * meta[2]:.4g} "
+            f"{meta[1]}, finest level within {100 * estimate.gci:.2g} %")
 
 
 def _level_or_finer(level: float | None) -> str:
@@ -609,8 +717,12 @@ def plot(study: Study, path: Path) -> None:
             continue
         cost, error, members = zip(*points)
         order = study.orders.get(name, math.nan)
+        three = (study.three_level or {}).get(name)
         axes.loglog(cost, error, "o-", label=meta[name][0]
-                    + (f" (order {order:.2f})" if math.isfinite(order) else ""))
+                    + (f" (order {order:.2f})" if math.isfinite(order) else "")
+                    + ("" if three is None else
+                       f", 3 finest: GCI {100 * three.gci:.2g} %" if three.status == "converging"
+                       else f", 3 finest: {three.status}"))
         for c, e, m in zip(cost, error, members):
             axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
                           xytext=(4, 4), fontsize=7)

@@ -66,6 +66,11 @@ class BeadMetrics:
     chemical_dilution: float = math.nan
     #: Secant angle of the bead's flanks at the toes [deg] (post only)
     wetting_angle: float = 0.0
+    #: Metal fraction of the first cell layer on the surface under the bead
+    #: [-] and its gas as a film [m] (post only; 1 and 0 where the clad wets
+    #: the substrate)
+    first_layer_metal_fraction: float = math.nan
+    first_layer_gas: float = math.nan
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
@@ -175,35 +180,85 @@ def _largest_slice(areas: np.ndarray) -> int:
     return int(np.nonzero(areas >= (1 - SLICE_AREA_TOLERANCE) * areas.max())[0][-1])
 
 
+@dataclass(frozen=True)
+class _Section:
+    """The cells of a transverse slice of the bead above the surface, as the
+    meltPoolMetrics function object takes them: the slices are one shortest
+    cell long along the weld, from the mesh's upstream end; the section is
+    the plane through the slice's centre and holds every cell it cuts (a
+    longer cell beside a refined bead zone too)."""
+
+    low: np.ndarray
+    high: np.ndarray
+    alpha: np.ndarray
+    #: Cells of the slice above the surface, and those of them that are metal
+    in_slice: np.ndarray
+    in_bead: np.ndarray
+
+    @classmethod
+    def of(cls, grid, bead_section: float, surface_height: float,
+           metal_threshold: float) -> "_Section":
+        low, high = _cell_bounds(grid)
+        centre = 0.5 * (low + high)
+        alpha = np.asarray(grid.cell_data["alpha.metal"])
+        slice_length = (high - low)[:, 0].min()
+        origin = low[:, 0].min()
+        n_slices = max(1, int(np.ceil((high[:, 0].max() - origin) / slice_length - 1e-12)))
+        index = int(np.clip(np.floor((bead_section - origin) / slice_length), 0, n_slices - 1))
+        plane = origin + (index + 0.5) * slice_length
+        in_slice = (centre[:, 2] >= surface_height) & (low[:, 0] <= plane) & (high[:, 0] > plane)
+        return cls(low, high, alpha, in_slice, in_slice & (alpha >= metal_threshold))
+
+    @property
+    def toes(self) -> tuple[float, float]:
+        """The outer edges across the weld of the bead's metal cells."""
+        return float(self.low[self.in_bead, 1].min()), float(self.high[self.in_bead, 1].max())
+
+
 def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
                        metal_threshold: float = METAL_THRESHOLD) -> float:
     """Secant angle [deg] of the bead's flanks at its toes, in the transverse
-    slice at ``bead_section`` [m] (0 without bead there).
-
-    The slices are the meltPoolMetrics function object's: one shortest cell
-    long along the weld, from the mesh's upstream end; the section is the
-    plane through the slice's centre and holds every cell it cuts (a longer
-    cell beside a refined bead zone too).
-    """
-    low, high = _cell_bounds(grid)
-    centre = 0.5 * (low + high)
-    span = high - low
-    alpha = np.asarray(grid.cell_data["alpha.metal"])
-
-    slice_length = span[:, 0].min()
-    origin = low[:, 0].min()
-    n_slices = max(1, int(np.ceil((high[:, 0].max() - origin) / slice_length - 1e-12)))
-
-    def slice_of(w: np.ndarray) -> np.ndarray:
-        return np.clip(np.floor((w - origin) / slice_length).astype(int), 0, n_slices - 1)
-
-    plane = origin + (slice_of(np.array([bead_section]))[0] + 0.5) * slice_length
-    in_slice = (centre[:, 2] >= surface_height) & (low[:, 0] <= plane) & (high[:, 0] > plane)
-    in_bead = in_slice & (alpha >= metal_threshold)
-    if not in_bead.any():
+    slice at ``bead_section`` [m] (0 without bead there; the section as
+    :class:`_Section` takes it)."""
+    section = _Section.of(grid, bead_section, surface_height, metal_threshold)
+    if not section.in_bead.any():
         return 0.0
-    return wetting_angle(centre[in_slice, 1], (alpha * span[:, 2])[in_slice],
-                         low[in_bead, 1].min(), high[in_bead, 1].max())
+    centre = 0.5 * (section.low + section.high)
+    height = section.alpha * (section.high - section.low)[:, 2]
+    return wetting_angle(centre[section.in_slice, 1], height[section.in_slice], *section.toes)
+
+
+#: Cells whose lower face lies this share of their height from the surface
+#: stand on it
+SURFACE_ROW_TOLERANCE = 1e-3
+
+
+def first_layer(grid, bead_section: float, surface_height: float = 0.0,
+                metal_threshold: float = METAL_THRESHOLD) -> tuple[float, float]:
+    """Metal fraction of the first layer of cells on the substrate's surface
+    under the bead, between its toes, in the slice at ``bead_section``
+    (each cell by its width across the weld), and the gas in it as a film
+    thickness [m] (the gas's volume over the footprint's area: comparable
+    between meshes whose first layers differ in height); NaN without a bead
+    there.
+
+    A clad that wets its substrate fills that layer (1, no film); gas the
+    pool's front rolled over and froze in lowers it, and that gas separates
+    the bead from the base metal (lack of fusion, docs/limitations.md)."""
+    section = _Section.of(grid, bead_section, surface_height, metal_threshold)
+    if not section.in_bead.any():
+        return math.nan, math.nan
+    left, right = section.toes
+    height = (section.high - section.low)[:, 2]
+    on_surface = section.in_slice & (
+        np.abs(section.low[:, 2] - surface_height) <= SURFACE_ROW_TOLERANCE * height)
+    width = np.clip(np.minimum(section.high[:, 1], right) - np.maximum(section.low[:, 1], left),
+                    0.0, None) * on_surface
+    if not width.sum() > 0:
+        return math.nan, math.nan
+    metal = np.clip(section.alpha, 0.0, 1.0)
+    return (float((width * metal).sum() / width.sum()),
+            float((width * (1 - metal) * height).sum() / width.sum()))
 
 
 #: The function object ``ldna post`` runs at the time it reads (its table:
@@ -411,6 +466,11 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "chemical_dilution": (None if math.isnan(result.chemical_dilution)
                               else result.chemical_dilution),
         "wetting_angle_deg": result.wetting_angle,
+        # None (JSON null) without a bead in the section
+        "first_layer_metal_fraction": (None if math.isnan(result.first_layer_metal_fraction)
+                                       else result.first_layer_metal_fraction),
+        "first_layer_gas_mm": (None if math.isnan(result.first_layer_gas)
+                               else 1e3 * result.first_layer_gas),
         "pool_length_mm": 1e3 * result.pool_length,
         "pool_width_mm": 1e3 * result.pool_width,
         "fused_area_mm2": 1e6 * result.fused_area,
@@ -553,6 +613,8 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
                                      fusion_temperature_)
     outline = fused_outline(read_fusion_line(case, POST_FUNCTION, time_read), surface_height)
     result.wetting_angle = bead_wetting_angle(grid, result.bead_section, surface_height)
+    result.first_layer_metal_fraction, result.first_layer_gas = first_layer(
+        grid, result.bead_section, surface_height)
 
     temperature = np.asarray(grid.cell_data["T"])
     if temperature_range is None:
@@ -610,4 +672,6 @@ def format_metrics(result: BeadMetrics) -> str:
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
         f"deepest fusion x {1e3 * result.fused_section:8.2f} mm",
         f"wetting angle    {result.wetting_angle:8.1f} deg",
+        f"first layer      {100 * result.first_layer_metal_fraction:8.1f} % metal "
+        f"(gas film {1e3 * result.first_layer_gas:.3f} mm)",
     ])

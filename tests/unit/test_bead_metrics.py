@@ -90,3 +90,52 @@ def test_a_run_restarted_from_the_same_time_replaces_the_earlier_rows(tmp_path: 
     table = read_function_object_metrics(tmp_path)
     np.testing.assert_array_equal(table[:, 0], [12.81, 12.82, 12.83, 12.84])
     assert (table[:, 1:] == 2.0).all()
+
+
+def _block(cell: float, alpha_of) -> "object":
+    """A block of cubic cells (x 0-2 mm, y -3-3 mm, z -1-1 mm) as the
+    OpenFOAM reader gives it, with alpha.metal from ``alpha_of(y, z)`` of
+    each cell's centre."""
+    import pyvista as pv
+
+    shape = (round(2e-3 / cell), round(6e-3 / cell), round(2e-3 / cell))
+    grid = pv.ImageData(dimensions=tuple(n + 1 for n in shape), spacing=(cell,) * 3,
+                        origin=(0.0, -3e-3, -1e-3)).cast_to_unstructured_grid()
+    centres = np.asarray(grid.cell_centers().points)
+    grid.cell_data["alpha.metal"] = np.array([alpha_of(y, z) for _, y, z in centres])
+    return grid
+
+
+@pytest.mark.parametrize("cell", [0.25e-3, 0.125e-3])
+def test_first_layer_of_a_bead_on_a_gas_film(cell: float) -> None:
+    """A 4 mm wide bead whose first layer on the substrate holds a gas film
+    0.1 mm thick under its middle 2 mm and none under the rest: the layer's
+    metal fraction is the width-weighted mean of its cells, the film the
+    gas's volume over the footprint: 0.1 x 2 / 4 = 0.05 mm on either mesh."""
+    from ldna.post import first_layer
+
+    film = 0.1e-3
+
+    def alpha(y: float, z: float) -> float:
+        if z < 0:
+            return 1.0
+        if abs(y) > 2e-3 or z > 1e-3:
+            return 0.0
+        if z < cell and abs(y) < 1e-3:
+            return 1 - film / cell
+        return 1.0
+
+    fraction, gas = first_layer(_block(cell, alpha), 1e-3)
+    assert gas == pytest.approx(0.5 * film, rel=1e-9)
+    assert fraction == pytest.approx(1 - 0.5 * film / cell, rel=1e-9)
+
+
+def test_first_layer_of_a_wetting_bead_and_of_none() -> None:
+    """A bead that fills its first layer has no film; a section without metal
+    above the surface has no first layer to measure."""
+    from ldna.post import first_layer
+
+    bead = _block(0.25e-3, lambda y, z: 1.0 if z < 0 or (abs(y) < 2e-3 and z < 1e-3) else 0.0)
+    assert first_layer(bead, 1e-3) == (1.0, 0.0)
+    bare = _block(0.25e-3, lambda y, z: 1.0 if z < 0 else 0.0)
+    assert all(math.isnan(value) for value in first_layer(bare, 1e-3))

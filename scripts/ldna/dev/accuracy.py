@@ -69,6 +69,7 @@ LDNA_OUTPUTS = {
     "bead_width": ("bead width", "mm", 1e3),
     "bead_area": ("bead area", "mm2", 1e6),
     "wetting_angle": ("wetting angle", "deg", 1.0),
+    "first_layer_gas": ("gas film under the bead", "mm", 1e3),
     "bonded_width": ("bonded width", "mm", 1e3),
     "dilution": ("dilution", "-", 1.0),
     "peak_temperature": ("peak metal temperature", "K", 1.0),
@@ -156,21 +157,26 @@ class BeadScene(LdnaScene):
     steady`` judges its bead quasi-steady (domain balance included), in
     stretches of ``STRETCH`` after the first ``WINDOWS`` shortest windows,
     at most to ``end_time``; its outputs are the window means of the last
-    judged windows (and the wetting angle at the last time).
+    judged windows (the wetting angle and the gas film under the bead at
+    the last time: ``ldna post`` reads them from the fields).
 
     Start every level from a steady run of the scene (``--start-from``): a
     level then only relaxes to its own resolution's weld."""
 
     name = "bead"
     outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
-        "bead_width", "bead_height", "bead_area", "wetting_angle", "bonded_width",
+        "bead_width", "bead_height", "bead_area", "wetting_angle", "first_layer_gas",
+        "bonded_width",
         "penetration", "dilution", "pool_length")}
     #: Errors of the bond's metrics, which are 0 without fusion, are read
     #: against the bead's size in their direction, as ldna steady reads them
     #: (the penetration against the height, the bonded width against the
     #: width, the dilution against 1); the bead's own against themselves
-    error_scales = {name: scale for name, scale in STEADY_SCALES.items()
-                    if name in ("bonded_width", "penetration", "dilution")}
+    error_scales = {**{name: scale for name, scale in STEADY_SCALES.items()
+                       if name in ("bonded_width", "penetration", "dilution")},
+                    # 0 where the clad wets its substrate: read against the
+                    # height, as the penetration is
+                    "first_layer_gas": "bead_height"}
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: a
@@ -226,6 +232,7 @@ class BeadScene(LdnaScene):
         grid = post.read_case(case.path)
         section = post.configured_bead_section(case.path)
         values["wetting_angle"] = post.bead_wetting_angle(grid, section, 0.0)
+        values["first_layer_gas"] = post.first_layer(grid, section, 0.0)[1]
         return values
 
 

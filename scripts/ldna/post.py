@@ -516,11 +516,20 @@ def render_surface(grid, path: Path, temperature_range: tuple[float, float]) -> 
     return path
 
 
+#: How ``render_section`` colours a section: the field, its colour map and
+#: its bar's title
+TEMPERATURE_COLOURS = ("T", "inferno", "T [K]")
+#: The metal fraction, to show gas in the deposit (the first layer's film)
+METAL_COLOURS = ("alpha.metal", "cividis", "metal fraction")
+
+
 def render_section(grid, path: Path, normal: str, origin: tuple[float, float, float],
                    fusion_temperature_: float, temperature_range: tuple[float, float],
                    title: str, outline: np.ndarray | None = None,
-                   surface_height: float = 0.0) -> Path:
-    """A plane section coloured by temperature, with the fusion line and free surface.
+                   surface_height: float = 0.0,
+                   colours: tuple[str, str, str] = TEMPERATURE_COLOURS) -> Path:
+    """A plane section coloured by temperature (or ``colours``: the metal
+    fraction from 0 to 1), with the fusion line and free surface.
 
     ``outline``: (y, z) points of the fused zone in a transverse section
     (``fused_outline``), drawn as the fusion line; without it the fusion
@@ -529,8 +538,10 @@ def render_section(grid, path: Path, normal: str, origin: tuple[float, float, fl
     """
     section = grid.slice(normal=normal, origin=origin)
     plotter = _plotter()
-    plotter.add_mesh(section, scalars="T", cmap="inferno", clim=temperature_range,
-                     preference="cell", scalar_bar_args=_temperature_bar())
+    field, cmap, bar_title = colours
+    plotter.add_mesh(section, scalars=field, cmap=cmap,
+                     clim=temperature_range if field == "T" else (0.0, 1.0),
+                     preference="cell", scalar_bar_args=_temperature_bar(bar_title))
     if outline is not None:
         fusion_lines = [_polyline(run, origin[0]) for run in _runs(outline)]
         fusion_label = "fusion line (pool's projection)"
@@ -632,6 +643,11 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
                        t_fusion, temperature_range,
                        f"Longitudinal section y = 0, {time_label}",
                        surface_height=surface_height),
+        # The bead's section by metal fraction: gas under or in the bead
+        render_section(grid, output / "transverse-metal.png", "x",
+                       (result.bead_section, centre[1], centre[2]), t_fusion, temperature_range,
+                       f"Bead section x = {1e3 * result.bead_section:.2f} mm, metal fraction, "
+                       f"{time_label}", outline, surface_height, METAL_COLOURS),
     ]
     with open(output / "metrics.csv", "w", encoding="utf-8") as stream:
         values = result.as_dict()

@@ -196,7 +196,8 @@ def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Case, tmp_path: Path)
 def test_post_writes_pictures_headless(synthetic_pool_case: Case) -> None:
     case = synthetic_pool_case
     result, pictures, _ = post_process(case, time=0.0)
-    assert [p.name for p in pictures] == ["surface.png", "transverse.png", "longitudinal.png"]
+    assert [p.name for p in pictures] == ["surface.png", "transverse.png", "longitudinal.png",
+                                          "transverse-metal.png"]
     for picture in pictures:
         data = picture.read_bytes()
         assert data.startswith(b"\x89PNG"), picture

@@ -104,6 +104,13 @@ def _accuracy(args: argparse.Namespace) -> int:
             return 2
         start = accuracy.StartState(Path(args.start_from), args.start_time)
     end_time = args.end_time
+    if args.min_window is not None:
+        if not isinstance(scene, accuracy.BeadScene):
+            print("ldna accuracy: error: --min-window judges a bead study's steadiness: "
+                  "give --scene bead", file=sys.stderr)
+            return 2
+        scene = copy.copy(scene)
+        scene.min_window = args.min_window
     if isinstance(scene, accuracy.BeadScene):
         if end_time is None:
             end_time = (start.time if start else 0.0) + scene.MAX_SPAN
@@ -428,6 +435,11 @@ def build_parser() -> argparse.ArgumentParser:
                                "--start-from weld has its metal's surface, its pool and its "
                                "droplets (level L: level L-1 with that band split once, "
                                "bandLevel in caseParameters; levels from 0)")
+    accuracy.add_argument("--min-window", type=_positive_float, default=None, metavar="S",
+                          help="bead scene: judge steadiness over windows of at least S "
+                               "seconds (as ldna steady --min-window), for a weld that fills "
+                               "and drains slower than the default's ripple periods; give "
+                               "it to every leg of a study [ldna steady's default]")
     accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
     accuracy.add_argument("--resume", action="store_true",
                           help="continue the members that ran before from their latest "

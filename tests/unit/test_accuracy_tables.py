@@ -113,6 +113,24 @@ def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     assert first["core_hours_to_steady"] == pytest.approx(1.0 / 3600)
     assert first["bead_width_mm"] == pytest.approx(15 * 1.12)
     assert "finer than tested" in accuracy.markdown(study)
+    assert written["min_window_s"] == accuracy.STEADY_MIN_WINDOW
+
+
+def test_a_bead_study_states_its_steadiness_window(tmp_path: Path) -> None:
+    """A study judged over windows of at least 1 s (``--min-window 1``) says
+    so in its table and its JSON."""
+    scene = accuracy.BeadScene()
+    scene.min_window = 1.0
+    members = []
+    for level, h in ((0.0, 0.45), (1.0, 0.225)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h, wall_time=1.0,
+                                 start_time=12.0, end_time=18.0, steady=True, first_steady=17.0)
+        member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h)}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    assert "windows of at least 1 s" in accuracy.markdown(study)
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    assert json.loads((tmp_path / "accuracy.json").read_text())["min_window_s"] == 1.0
 
 
 @pytest.mark.parametrize("cells", [(0.225, 0.318, 0.45), (0.2, 0.3, 0.36)])

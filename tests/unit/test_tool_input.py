@@ -23,6 +23,8 @@ BAD_TOOL_CALLS = [
     (["gmsh-mesh", str(TEMPLATE), "--level", "7"], "0..3"),
     (["accuracy", str(TEMPLATE), "out", "--levels", "0,x"], "comma-separated list"),
     (["accuracy", str(TEMPLATE), "out", "--end-time", "-1"], "positive"),
+    (["accuracy", str(TEMPLATE), "out", "--min-window", "nan"], "positive"),
+    (["accuracy", str(TEMPLATE), "out", "--min-window", "1"], "--scene bead"),
     (["bead-report", "/nonexistent", "out"], "not an OpenFOAM case"),
 ]
 

@@ -31,6 +31,7 @@ import numpy as np
 from .. import meshing
 from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, Case
 from ..foamdict import read_scalars
+from ..steady import MIN_WINDOW as STEADY_MIN_WINDOW
 from ..steady import SCALES as STEADY_SCALES
 from ..stefan import NeumannSolution, front_position
 
@@ -184,6 +185,10 @@ class BeadScene(LdnaScene):
     #: (1.48 s) plus four windows of whole ripple periods (0.44 s at the
     #: band's level 0: 1.76 s), and may need stretches more
     MAX_SPAN = 4.0
+    #: Shortest window ``ldna steady`` judges with [s] (``--min-window``):
+    #: longer windows for a weld that fills and drains slower than the
+    #: default's ripple periods
+    min_window = STEADY_MIN_WINDOW
 
     def set_resolution(self, case: Case, level: float) -> float:
         return self.mesh_level(case, level)
@@ -204,7 +209,7 @@ class BeadScene(LdnaScene):
         section = post.configured_bead_section(case.path)
         arrival = None if section is None else post.bead_arrival_time(case, section)
         first = start if arrival is None else max(start, arrival)
-        target = max(first + steady.WINDOWS * steady.MIN_WINDOW, *written)
+        target = max(first + steady.WINDOWS * self.min_window, *written)
         stop = member.end_time
         target = min(self.STRETCH * math.ceil(target / self.STRETCH - 1e-9), stop)
         while True:
@@ -212,7 +217,7 @@ class BeadScene(LdnaScene):
             case.run("ldnaFoam", member.n_procs, log_name=f"ldnaFoam.{target:g}")
             # Later stretches continue from the latest written time
             case.set(control, "startFrom", "latestTime")
-            verdict = steady.case_steadiness(case.path)
+            verdict = steady.case_steadiness(case.path, min_window=self.min_window)
             member.steady = verdict.steady
             member.verdict = verdict.reason
             if verdict.steady or target >= stop - 1e-9:
@@ -221,12 +226,13 @@ class BeadScene(LdnaScene):
         member.end_time = target
         times, table, arrival = steady.case_table(case.path)
         member.first_steady = steady.first_steady(times, table, max(arrival or 0.0, start),
+                                                  self.min_window,
                                                   balance=steady.DomainBalance.of(case.path))
 
     def outputs(self, case: Case) -> dict[str, float]:
         from .. import post, steady
 
-        verdict = steady.case_steadiness(case.path)
+        verdict = steady.case_steadiness(case.path, min_window=self.min_window)
         values = {name: verdict.metrics[name].mean for name in self.outputs_meta
                   if name in verdict.metrics}
         grid = post.read_case(case.path)
@@ -623,6 +629,8 @@ def write_json(study: Study, path: Path) -> None:
         "orders": {n: finite(study.orders.get(n, math.nan)) for n in meta},
         "cheapest_level": cheapest_levels(study),
         "not_acting": list(study.not_acting),
+        # The steadiness judge's shortest window of a bead study [s]
+        "min_window_s": getattr(study.scene, "min_window", None),
         # In the output's units; the index relative to the output's size
         "three_level": None if study.three_level is None else {
             n: {"status": t.status, "order": finite(t.order),
@@ -675,7 +683,8 @@ def markdown(study: Study) -> str:
               f"Observed order of convergence (slope of log error over log cell size): "
               f"{orders or 'not enough non-zero errors to fit'}."]
     if any(m.steady is not None for m in study.members):
-        lines += ["", "Quasi-steady (`ldna steady`): " + "; ".join(
+        window = getattr(study.scene, "min_window", STEADY_MIN_WINDOW)
+        lines += ["", f"Quasi-steady (`ldna steady`, windows of at least {window:g} s): " + "; ".join(
             f"{m.name} {'yes' if m.steady else 'no (' + m.verdict + ')'}"
             + (f", first at {m.first_steady:.4g} s ({m.core_hours_to_steady:.2f} core-h "
                f"from {m.start_time:g} s)" if m.first_steady is not None else "")

@@ -72,6 +72,9 @@ class BeadMetrics:
     first_layer_metal_fraction: float = math.nan
     first_layer_gas: float = math.nan
 
+    #: What ``ldna post`` reads from the fields, not from the function object
+    POST_ONLY = ("wetting_angle", "first_layer_metal_fraction", "first_layer_gas")
+
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
         "pool_length", "pool_width", "penetration", "pool_volume", "bead_width",

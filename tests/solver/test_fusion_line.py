@@ -205,6 +205,8 @@ def test_fusion_line_on_two_ranks(level0_mesh: Case, tmp_path: Path) -> None:
         shutil.rmtree(processor)
     parallel = measure(parallel_case, n_procs=2)
     for name, value in serial.as_dict().items():
+        if name in BeadMetrics.POST_ONLY:
+            continue
         other = parallel.as_dict()[name]
         assert abs(value - other) <= AGREEMENT * max(abs(value), abs(other), 1e-12), name
 

@@ -7,6 +7,7 @@ checks that a bad input stops with a named FatalIOError and no crash.
 """
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -46,6 +47,7 @@ MESHING: dict[str, tuple[bool, tuple[str, ...]]] = {
     "laserSlab": (True, ("setFields",)),
     "marangoniLayer": (False, ("setFields",)),
     "staticDroplet": (False, ("setAlphaField",)),
+    "gasColumn": (True, ("setFields",)),
 }
 
 
@@ -77,3 +79,20 @@ def assert_named_error(case: Case, expected: list[str],
         assert text in error, f"'{text}' missing from the error message"
     for crash in crashes:
         assert crash not in output
+
+
+#: Linear-solver tolerance and energy iteration stop of the tight runs
+SOLVER_TOLERANCE = "1e-13"
+LIQUID_FRACTION_TOLERANCE = "1e-10"
+
+
+def tighten_solvers(case: Case) -> None:
+    """Converge every linear solver of the case to SOLVER_TOLERANCE, the
+    final corrector's (p_rghFinal, (U|T)Final) too, with no relative
+    tolerance, and the energy iteration to LIQUID_FRACTION_TOLERANCE."""
+    fv_solution = case / "system" / "fvSolution"
+    solvers, rest = fv_solution.read_text().split("PIMPLE", 1)
+    solvers = re.sub(r"(\n\s*)tolerance\s+[^;]+;", rf"\1tolerance {SOLVER_TOLERANCE};", solvers)
+    solvers = re.sub(r"(\n\s*)relTol\s+[^;]+;", r"\1relTol 0;", solvers)
+    fv_solution.write_text(solvers + "PIMPLE" + rest)
+    case.set("system/fvSolution", "PIMPLE/liquidFractionTolerance", LIQUID_FRACTION_TOLERANCE)

@@ -40,6 +40,8 @@ laser_slab_case = meshed_case_fixture(
     "laserSlab", "The box with a flat 316L slab under argon, for the laser tests.")
 marangoni_layer_case = meshed_case_fixture(
     "marangoniLayer", "The 2D liquid layer between a hot and a cold wall, no gravity.")
+gas_column_case = meshed_case_fixture(
+    "gasColumn", "The 1D column of liquid 316L under argon with 5 % gas in one cell.")
 static_droplet_case = meshed_case_fixture(
     "staticDroplet", "The 2D box with a liquid cylinder of exact cut-cell fractions.")
 

@@ -37,7 +37,6 @@ metal it holds (one temperature per cell).
 """
 from __future__ import annotations
 
-import re
 import shutil
 from pathlib import Path
 
@@ -49,7 +48,7 @@ from ldna.case import Case
 from ldna.foamdict import keep_blocks
 from ldna.post import BeadMetrics, read_function_object_metrics
 from ldna.steady import window_mean
-from solver_cases import TEMPLATE
+from solver_cases import TEMPLATE, tighten_solvers
 
 
 #: Times of the comparisons [s]: droplets inserted at 9.75 ms, in flight
@@ -62,9 +61,6 @@ WRITE_INTERVAL = "0.0015"
 WRITES_KEPT = 4
 #: Temperature [K] the laser brings the metal above by END_TIME (ambient 300 K)
 HEATED = 400
-#: Linear-solver tolerance and energy iteration stop of the tight runs
-SOLVER_TOLERANCE = "1e-13"
-LIQUID_FRACTION_TOLERANCE = "1e-10"
 #: Allowed difference of a cell's metal fraction in flight with tight
 #: tolerances (the issue's bound; measured 6.9e-11, 3.7e-8 and 1.2e-8 on 2,
 #: 3 and 4 ranks at 10.5 ms, 8.4e-9 for the renumbered serial run)
@@ -102,18 +98,6 @@ LANDING_TOLERANCE = 1e-4
 
 #: Effects of the template compared, besides the droplets
 EFFECTS = ["laser", "marangoni", "evaporation", "surfaceLosses", "enthalpyPorosity"]
-
-
-def tighten_solvers(case: Case) -> None:
-    """Converge every linear solver of the case to SOLVER_TOLERANCE, the
-    final corrector's (p_rghFinal, (U|T)Final) too, with no relative
-    tolerance, and the energy iteration to LIQUID_FRACTION_TOLERANCE."""
-    fv_solution = case / "system" / "fvSolution"
-    solvers, rest = fv_solution.read_text().split("PIMPLE", 1)
-    solvers = re.sub(r"(\n\s*)tolerance\s+[^;]+;", rf"\1tolerance {SOLVER_TOLERANCE};", solvers)
-    solvers = re.sub(r"(\n\s*)relTol\s+[^;]+;", r"\1relTol 0;", solvers)
-    fv_solution.write_text(solvers + "PIMPLE" + rest)
-    case.set("system/fvSolution", "PIMPLE/liquidFractionTolerance", LIQUID_FRACTION_TOLERANCE)
 
 
 #: The serial runs and their renumbered twins, once per set-up

@@ -49,6 +49,8 @@ Description
 #include "metalGasMixture.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
+#include "metalDrift.H"
+#include "optionsImplementing.H"
 #include "upwind.H"
 #include "checkedInput.H"
 #include "fieldIO.H"

@@ -425,6 +425,7 @@ EFFECT_TABLES = {
     "marangoni": ("marangoni", "force", "maxTangentialStress"),
     "evaporation": ("evaporation", "evaporation", "massRate"),
     "surfaceLosses": ("surfaceLosses", "losses", "radiated"),
+    "gasRise": ("gasRise", "drift", "metalDown"),
 }
 #: Gravity [m/s2] of the droplets' fall (the template's constant/g)
 GRAVITY = 9.81

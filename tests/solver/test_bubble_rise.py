@@ -134,7 +134,8 @@ def test_the_drift_crosses_processor_boundaries(gas_column_case: Case, n_procs: 
     ("constant/fvOptions:gasRise/riseVelocity", "1e300", ["riseVelocity", "(0, 10]"]),
     ("constant/fvOptions:gasRise/riseVelocity", None, ["riseVelocity"]),
     ("constant/fvOptions:gasRise/riseVelocty", "0.05", ["riseVelocty", "riseVelocity"]),
-], ids=["zero", "huge", "missing", "misspelt"])
+    ("constant/g:value", "(0 0 0)", ["gasRise", "'value'", "constant/g", "(0, inf)"]),
+], ids=["zero", "huge", "missing", "misspelt", "no gravity"])
 def test_bad_input_is_a_named_error(gas_column_case: Case, entry: str, value: str | None,
                                     expected: list[str]) -> None:
     file, key = entry.split(":")

@@ -46,10 +46,10 @@ Foam::vector Foam::fv::bubbleRise::up() const
     const scalar magG = mag(g.value());
     if (!(magG > 0))
     {
-        FatalErrorInFunction
-            << "fvOption " << name_ << " (bubbleRise): the gravity "
-            << g.value() << " of constant/g has no direction: gas rises"
-            << " against gravity" << exit(FatalError);
+        FatalIOErrorInFunction(coeffs_)
+            << "fvOption " << name_ << " (bubbleRise): entry 'value' of"
+            << " constant/g is " << g.value() << ": gas rises against"
+            << " gravity, so |g| must lie in (0, inf)" << exit(FatalIOError);
     }
     return -g.value()/magG;
 }

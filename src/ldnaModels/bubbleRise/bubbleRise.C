@@ -228,7 +228,17 @@ Foam::tmp<Foam::surfaceScalarField> Foam::fv::bubbleRise::metalDriftFlux
     if (log_ && loggedTimeIndex_ != mesh_.time().timeIndex())
     {
         loggedTimeIndex_ = mesh_.time().timeIndex();
-        driftFile_.writeRow({gSum(mag(drift.primitiveField()))});
+
+        // Every face once: a processor face is on both of its ranks
+        scalar metalDown = sum(mag(drift.primitiveField()));
+        for (const fvsPatchScalarField& driftp : drift.boundaryField())
+        {
+            if (driftp.coupled())
+            {
+                metalDown += 0.5*sum(mag(driftp));
+            }
+        }
+        driftFile_.writeRow({returnReduce(metalDown, sumOp<scalar>())});
     }
 
     return tdrift;

@@ -28,7 +28,8 @@ def _bench_laser(args: argparse.Namespace) -> int:
 
 def _bench(args: argparse.Namespace) -> int:
     costs = benchmark.solver_costs(level=args.level, steps=args.steps, n_procs=args.np,
-                                   repeats=args.repeats, start_time=args.start_time)
+                                   repeats=args.repeats, start_time=args.start_time,
+                                   instruction_steps=args.instructions)
     if args.json:
         print(json.dumps(costs.summary()))
     else:
@@ -215,6 +216,7 @@ def _whole_number(low: int, high: int | None, what: str = "") -> Callable[[str],
 
 
 _positive_int = _whole_number(1, None)
+_non_negative_int = _whole_number(0, None)
 _level = _whole_number(0, 3, "level ")
 
 
@@ -359,6 +361,12 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--np", type=_positive_int, default=2, help="MPI ranks of the parallel run")
     bench.add_argument("--repeats", type=_positive_int, default=5,
                        help="rounds of every variant; the median of each round's ratios counts")
+    bench.add_argument("--instructions", type=_non_negative_int, default=0, metavar="STEPS",
+                       help="also count the instructions per step of every serial variant "
+                            "under valgrind's callgrind over STEPS steps after the first, from "
+                            "the state two steps before a droplet's insertion: ratios that do "
+                            "not depend on the machine's load (0: off; about 3 min per variant "
+                            "for 4 steps at level 0)")
     _json_flag(bench, "the figures as one JSON object instead of a table")
     bench.set_defaults(func=_bench)
 

@@ -58,3 +58,44 @@ def test_monte_carlo_variant_changes_only_the_templates_absorption_model() -> No
     kept = [line for line in options.splitlines() if "beerLambert" not in line
             and "nRaysAcross" not in line and not line.strip().startswith("//")]
     assert all(line in variant for line in kept)
+
+
+def _dump(path, total: int) -> None:
+    """A callgrind dump's head as valgrind 3.19 writes it (the fields the
+    reader needs: the event and its total)."""
+    path.write_text(f"# callgrind format\nversion: 1\ncreator: callgrind-3.19.0\n"
+                    f"events: Ir\nsummary: {total}\n\nfl=(1) a.C\nfn=(1) main\n0 {total}\n"
+                    f"\ntotals: {total}\n")
+
+
+def test_step_counts_leave_out_the_start_up_the_first_step_and_the_end(tmp_path) -> None:
+    """Callgrind dumps before each step: dump 1 is the start-up, dump k + 1
+    step k, and the last file (no number) the last step with the end; the
+    first step, where a model may set itself up, is left out unless asked."""
+    from ldna.dev.benchmark import callgrind_step_counts
+
+    prefix = tmp_path / "steps"
+    _dump(tmp_path / "steps.1", 800)
+    for step, total in enumerate((300, 130, 128, 127), start=1):
+        _dump(tmp_path / f"steps.{step + 1}", total)
+    _dump(prefix, 150)
+    assert callgrind_step_counts(prefix, 3) == [130, 128, 127]
+    assert callgrind_step_counts(prefix, 2) == [130, 128]
+    assert callgrind_step_counts(prefix, 2, first=1) == [300, 130]
+    with pytest.raises(RuntimeError, match="step 5"):
+        callgrind_step_counts(prefix, 4)
+
+
+def test_instruction_ratios_are_taken_against_no_effects_and_the_reference() -> None:
+    costs = SolverCosts(
+        level=0, cells=36077, steps=40, delta_t=5e-5, start_time=0.1,
+        ldna_no_effects=0.30, compressible_inter_foam=0.25,
+        effects=[StepCost("laser", 0.33, 1.1)], all_effects=0.45,
+        template_delta_t=1.2e-4, serial_all_effects=0.45, parallel_all_effects=0.30,
+        n_procs=2, repeats=3, instruction_steps=4, instruction_start=0.1096,
+        instructions={"none": 1.3e9, "compressibleInterFoam": 1.0e9,
+                      "compressibleInterFoamDefault": 0.9e9, "laser": 1.43e9, "all": 1.5e9})
+    ratios = json.loads(json.dumps(costs.summary()))["instruction_ratios"]
+    assert ratios == {"laser": pytest.approx(1.1), "no_effects": pytest.approx(1.3),
+                      "all_effects": pytest.approx(1.5),
+                      "all_effects_default_reference": pytest.approx(1.5 / 0.9)}

@@ -208,6 +208,13 @@ class SolverCosts:
     effect_evidence: dict[str, str] = field(default_factory=dict)
     #: Spread of each ratio over the rounds: (largest - least) / median
     spreads: dict[str, float] = field(default_factory=dict)
+    #: Counted instructions (``instruction_steps`` > 0): per step of each
+    #: serial variant over ``instruction_steps`` steps from
+    #: ``instruction_start`` (the state before the window's first droplet
+    #: insertion), the same in every run of a build on the same input
+    instruction_steps: int = 0
+    instruction_start: float = float("nan")
+    instructions: dict[str, float] = field(default_factory=dict)
 
     @property
     def throughput(self) -> float:
@@ -224,6 +231,21 @@ class SolverCosts:
         refinement = (cells / self.cells) ** (1 / 3)
         delta_t = self.template_delta_t / refinement ** CAPILLARY_EXPONENT
         return cells / self.throughput / delta_t / 3600
+
+    def instruction_ratios(self) -> dict[str, float]:
+        """Ratios of counted instructions per step: each effect against no
+        effects, no effects and all effects against the reference (and all
+        against the reference at its default sweeps)."""
+        counts = self.instructions
+        if not counts:
+            return {}
+        ratios = {cost.variant: counts[cost.variant] / counts["none"]
+                  for cost in self.effects if cost.variant in counts}
+        ratios["no_effects"] = counts["none"] / counts[REFERENCE_VARIANT]
+        ratios["all_effects"] = counts["all"] / counts[REFERENCE_VARIANT]
+        default = counts.get(DEFAULT_REFERENCE_VARIANT, counts[REFERENCE_VARIANT])
+        ratios["all_effects_default_reference"] = counts["all"] / default
+        return ratios
 
     @property
     def parallel_efficiency(self) -> float:
@@ -261,6 +283,10 @@ class SolverCosts:
             "throughput_cell_steps_per_core_s": self.throughput,
             "template_delta_t_s": self.template_delta_t,
             "projected_core_hours_per_simulated_s": self.projected_core_hours(),
+            "instruction_steps": self.instruction_steps,
+            "instruction_start_s": self.instruction_start,
+            "instructions_per_step": dict(self.instructions),
+            "instruction_ratios": self.instruction_ratios(),
         }
 
 
@@ -375,6 +401,67 @@ class _Variant:
         return time.perf_counter() - began
 
 
+#: Counted instructions: valgrind's callgrind writes its counts before each
+#: time step (Time::operator++), so that every step's count is its own and
+#: the start-up's stays out
+CALLGRIND_STEP_DUMP = "*Time::operator++*"
+
+
+def callgrind_step_counts(prefix: Path, steps: int, first: int = 2) -> list[int]:
+    """Instructions of ``steps`` time steps from step ``first`` on, from the
+    dumps of ``valgrind --tool=callgrind --dump-before=<each step>
+    --callgrind-out-file=prefix``: ``prefix.1`` holds the start-up,
+    ``prefix.<k + 1>`` step k.  The first step is left out by default: a
+    model may set itself up there (the laser's first step counts 2.3 times
+    a later one)."""
+    counts = []
+    for dump in range(first + 1, first + steps + 1):
+        path = Path(f"{prefix}.{dump}")
+        if not path.is_file():
+            raise RuntimeError(f"callgrind wrote no count of step {dump - 1} ({path} is missing)")
+        found = re.search(r"^(?:summary|totals):\s+(\d+)", path.read_text(), re.M)
+        if found is None:
+            raise RuntimeError(f"{path}: no 'summary:' line of a callgrind dump")
+        counts.append(int(found.group(1)))
+    return counts
+
+
+def _counted_instructions(variant: _Variant, start: str, steps: int, delta_t: float) -> float:
+    """Mean instructions per step of ``variant`` (serial) over ``steps``
+    steps after the first from its time directory ``start``, counted by
+    callgrind."""
+    if shutil.which("valgrind") is None:
+        raise RuntimeError("counted instructions need valgrind (apt-get install valgrind)")
+    if variant.options is not None:
+        (variant.case / "constant/fvOptions").write_text(variant.options)
+    control = "system/controlDict"
+    saved = {entry: variant.case.written(control, entry) for entry in ("startTime", "endTime")}
+    prefix = variant.case.path / "callgrind" / variant.log_name
+    shutil.rmtree(prefix.parent, ignore_errors=True)
+    prefix.parent.mkdir()
+    variant.case.set(control, "startTime", start)
+    # The first step, the counted ones and one more: the last dump holds the
+    # last step and the end
+    variant.case.set(control, "endTime", f"{float(start) + (steps + 2) * delta_t:.9g}")
+    try:
+        variant.case.run(f"valgrind --tool=callgrind --dump-before='{CALLGRIND_STEP_DUMP}' "
+                         f"--callgrind-out-file={prefix} {variant.command}",
+                         log_name=f"{variant.log_name}.callgrind")
+    finally:
+        for entry, value in saved.items():
+            variant.case.set(control, entry, value)
+    return statistics.mean(callgrind_step_counts(prefix, steps))
+
+
+def _insertion_onsets(case: Case) -> list[float]:
+    """Onsets [s] of the droplets inserted in the latest run of ``case``."""
+    try:
+        table = case.latest_table("wireDroplets", "insertions")
+    except (FileNotFoundError, ValueError):
+        return []
+    return sorted(float(row["Time"]) for row in np.atleast_1d(table))
+
+
 def _start_up_seconds(variant: _Variant, steps: int, delta_t: float) -> float:
     """Wall time [s] of a run of one step of ``variant``: what a run costs
     before its steps (launch, mesh, fields) and one step."""
@@ -476,7 +563,8 @@ def _template_alpha_excursion(case: Case) -> float:
 
 
 def solver_costs(level: int = 0, steps: int = 140, start_time: float = 0.1, n_procs: int = 2,
-                 repeats: int = 5, work_dir: Path | None = None) -> SolverCosts:
+                 repeats: int = 5, work_dir: Path | None = None,
+                 instruction_steps: int = 0) -> SolverCosts:
     """Run every variant of the benchmark ``repeats`` times; see the module's description.
 
     The template first runs with its adaptive step from the flat substrate
@@ -490,6 +578,12 @@ def solver_costs(level: int = 0, steps: int = 140, start_time: float = 0.1, n_pr
     REFERENCE_LIMITER_CANDIDATES whose excursion outside [0, 1] is at most
     ldnaFoam's or the template's traceMetalFraction, the fraction ldnaFoam
     counts as no metal), and at OpenFOAM's default.
+
+    With ``instruction_steps`` > 0 every serial variant also runs under
+    callgrind from the template's state two steps before the window's first
+    droplet insertion, and that many steps after the first are counted:
+    instructions per step, which do not depend on what else the machine
+    runs.
     """
     if steps < 2:
         raise ValueError(f"--steps {steps}: at least 2 (a run's start-up is its one-step run)")
@@ -566,9 +660,17 @@ def solver_costs(level: int = 0, steps: int = 140, start_time: float = 0.1, n_pr
     cpu, wall = _rounds(variants, repeats, steps)
     # Each effect's activity from its own variant's last run (its tables)
     active, evidence = {}, {}
+    onsets: list[float] = []
     for name in effects:
         variants[name].run()
         active[name], evidence[name] = _effect_activity(name, scene, begin, end)
+        if name == "wireDroplets":
+            onsets = [t for t in _insertion_onsets(scene) if begin <= t <= end]
+    instructions: dict[str, float] = {}
+    counted_from = float("nan")
+    if instruction_steps > 0:
+        counted_from, instructions = _instruction_counts(
+            variants, everything, scene, begin, delta_t, onsets, instruction_steps)
     # Wall time per step: a run of one step (start-up and a step) taken off
     wall_per_step = {name: (statistics.median(wall[name])
                             - _start_up_seconds(variants[name], steps, delta_t)) / (steps - 1)
@@ -595,7 +697,50 @@ def solver_costs(level: int = 0, steps: int = 140, start_time: float = 0.1, n_pr
                        reference_limiter_iterations=reference_sweeps,
                        default_reference=default, ldna_alpha_excursion=ldna_excursion,
                        reference_alpha_excursions=excursions, effect_active=active,
-                       effect_evidence=evidence, spreads=spreads)
+                       effect_evidence=evidence, spreads=spreads,
+                       instruction_steps=instruction_steps, instruction_start=counted_from,
+                       instructions=instructions)
+
+
+def _instruction_counts(variants: dict[str, _Variant], everything: _Variant, scene: Case,
+                        begin: float, delta_t: float, onsets: list[float], steps: int
+                        ) -> tuple[float, dict[str, float]]:
+    """Counted instructions per step of every serial variant over ``steps``
+    steps from one state: the template's (all effects) two steps before the
+    first droplet insertion in ``onsets`` (``begin`` without one), so that
+    the counted steps, which follow a first uncounted one, hold the
+    insertion."""
+    control = "system/controlDict"
+    lead = max(0, math.floor((onsets[0] - begin) / delta_t - 1e-6) - 2) if onsets else 0
+
+    def written_at(time: float) -> Path:
+        # Each timed run also writes its end: the state is found by its time
+        for directory in scene.times:
+            if abs(float(directory.name) - time) < 0.5 * delta_t:
+                return directory
+        raise RuntimeError(f"no time directory at {time:g} s in {scene.path}")
+
+    start = written_at(begin)
+    if lead > 0:
+        saved = {entry: scene.written(control, entry)
+                 for entry in ("endTime", "writeControl", "writeInterval")}
+        scene.set(control, "endTime", f"{begin + lead * delta_t:.9g}")
+        scene.set(control, "writeControl", "timeStep")
+        scene.set(control, "writeInterval", str(lead))
+        try:
+            everything.run()
+        finally:
+            for entry, value in saved.items():
+                scene.set(control, entry, value)
+        start = written_at(begin + lead * delta_t)
+    counts = {}
+    for name, variant in variants.items():
+        if variant.n_procs > 1:
+            continue
+        if variant.case.path != scene.path and not (variant.case / start.name).is_dir():
+            shutil.copytree(start, variant.case / start.name)
+        counts[name] = _counted_instructions(variant, start.name, steps, delta_t)
+    return float(start.name), counts
 
 
 def print_solver_costs(c: SolverCosts) -> None:
@@ -630,3 +775,14 @@ def print_solver_costs(c: SolverCosts) -> None:
           f"{c.projected_core_hours():.4g} core-hours per simulated second")
     print(f"mpirun -np {c.n_procs}: wall {c.parallel_all_effects:.4f} s per step against "
           f"{c.serial_all_effects:.4f} serial, parallel efficiency {c.parallel_efficiency:.3f}")
+    if c.instructions:
+        print(f"Counted instructions (callgrind) per step over {c.instruction_steps} steps after "
+              f"the first from {c.instruction_start:g} s:")
+        ratios = c.instruction_ratios()
+        for name, count in c.instructions.items():
+            ratio = ratios.get(name)
+            against = "" if ratio is None else f"   ratio to no effects {ratio:.4f}"
+            print(f"  {name:<30} {count:14.4g}{against}")
+        print(f"  no effects / compressibleInterFoam {ratios['no_effects']:.4f}; all effects "
+              f"{ratios['all_effects']:.4f} ({ratios['all_effects_default_reference']:.4f} at "
+              f"its default sweeps)")

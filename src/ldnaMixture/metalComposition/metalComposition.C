@@ -93,32 +93,6 @@ Foam::scalar Foam::metalComposition::massDensity
 }
 
 
-void Foam::metalComposition::densities
-(
-    const scalar T,
-    const scalar gl,
-    const scalar c,
-    scalar& gravity,
-    scalar& mass,
-    scalar& fillerMass
-) const
-{
-    // The same expressions as density and massDensity, so that the values
-    // are theirs to the last bit
-    const scalar rhoFiller = filler_->density(T, gl);
-    fillerMass = fillerDensity_->massDensity(rhoFiller);
-    if (!base_.valid())
-    {
-        gravity = rhoFiller;
-        mass = fillerMass;
-        return;
-    }
-    const scalar rhoBase = base_->density(T, gl);
-    gravity = c*rhoFiller + (1 - c)*rhoBase;
-    mass = c*fillerMass + (1 - c)*baseDensity_->massDensity(rhoBase);
-}
-
-
 Foam::scalar Foam::metalComposition::Cp(const scalar T, const scalar c) const
 {
     if (!base_.valid())

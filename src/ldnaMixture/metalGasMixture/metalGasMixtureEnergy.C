@@ -82,48 +82,37 @@ Foam::scalar Foam::metalGasMixture::correctLiquidFraction
 }
 
 
-void Foam::metalGasMixture::correctDensities()
+void Foam::metalGasMixture::correctThermo()
 {
-    // The metal's three densities from one look-up of each metal's rho(T, gl)
-    // per cell and boundary face
-    scalarField& rhoGravityc = rho1Gravity_.primitiveFieldRef();
-    scalarField& rhoc = rho1_.primitiveFieldRef();
-    const scalarField& Tc = T_.primitiveField();
-    const scalarField& glc = liquidFraction_.primitiveField();
-    scalar fillerMass = 0;
-    forAll(Tc, celli)
+    rho1Gravity_ = evaluate
+    (
+        "rho1",
+        dimDensity,
+        [&](scalar T, scalar gl, scalar c)
+        {
+            return metals_->density(T, gl, c);
+        }
+    );
+    rho1_ = evaluate
+    (
+        "rho1",
+        dimDensity,
+        [&](scalar T, scalar gl, scalar c)
+        {
+            return metals_->massDensity(T, gl, c);
+        }
+    );
+    if (fillerDensity_.valid())
     {
-        metals_->densities
+        *fillerDensity_ = evaluate
         (
-            Tc[celli], glc[celli], fillerFractionAt(celli),
-            rhoGravityc[celli], rhoc[celli], fillerMass
-        );
-        if (fillerDensity_.valid())
-        {
-            fillerDensity_->primitiveFieldRef()[celli] = fillerMass;
-        }
-    }
-    forAll(T_.boundaryField(), patchi)
-    {
-        const scalarField& Tp = T_.boundaryField()[patchi];
-        const scalarField& glp = liquidFraction_.boundaryField()[patchi];
-        scalarField& rhoGravityp = rho1Gravity_.boundaryFieldRef()[patchi];
-        scalarField& rhop = rho1_.boundaryFieldRef()[patchi];
-        forAll(Tp, facei)
-        {
-            metals_->densities
-            (
-                Tp[facei], glp[facei],
-                fillerFraction_.valid()
-              ? fillerFraction_->boundaryField()[patchi][facei]
-              : scalar(1),
-                rhoGravityp[facei], rhop[facei], fillerMass
-            );
-            if (fillerDensity_.valid())
+            "rhoFiller",
+            dimDensity,
+            [&](scalar T, scalar gl, scalar)
             {
-                fillerDensity_->boundaryFieldRef()[patchi][facei] = fillerMass;
+                return metals_->massDensity(T, gl, 1);
             }
-        }
+        );
     }
 
     psi2_ = evaluate
@@ -136,11 +125,7 @@ void Foam::metalGasMixture::correctDensities()
         }
     );
     rho2_ = psi2_*p_;
-}
 
-
-void Foam::metalGasMixture::correctTransport()
-{
     kappa_ = alpha1()*kappa1() + alpha2()*kappa2();
 
     const volScalarField mu1
@@ -165,13 +150,6 @@ void Foam::metalGasMixture::correctTransport()
         )
     );
     mu_ = alpha1()*mu1 + alpha2()*mu2;
-}
-
-
-void Foam::metalGasMixture::correctThermo()
-{
-    correctDensities();
-    correctTransport();
 }
 
 

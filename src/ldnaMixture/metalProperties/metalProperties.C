@@ -55,24 +55,6 @@ Foam::metalProperties::metalProperties
         "kappa", kappaSolid_, kappaLiquid_, limits::conductivity, false
     );
     muLiquid_ = temperatureTable::New(dict, "mu", Tl, Tmax, limits::viscosity);
-
-    CpAtSolidus_ = CpSolid_->value(Ts);
-    CpAtLiquidus_ = CpLiquid_->value(Tl);
-    hAtSolidus_ = CpSolid_->integrate(Tref_, Ts);
-    hAtLiquidus_ = mushyEnthalpy(Tl);
-}
-
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-Foam::scalar Foam::metalProperties::mushyEnthalpy(const scalar T) const
-{
-    const scalar Ts = Tsolidus();
-    const scalar Tl = Tliquidus();
-    const scalar dT = min(T, Tl) - Ts;
-    return
-        hAtSolidus_ + CpAtSolidus_*dT
-      + 0.5*(CpAtLiquidus_ - CpAtSolidus_)*sqr(dT)/(Tl - Ts);
 }
 
 
@@ -90,21 +72,35 @@ Foam::scalar Foam::metalProperties::Cp(const scalar T) const
     {
         return CpLiquid_->value(T);
     }
-    return CpAtSolidus_ + (CpAtLiquidus_ - CpAtSolidus_)*(T - Ts)/(Tl - Ts);
+    const scalar CpS = CpSolid_->value(Ts);
+    const scalar CpL = CpLiquid_->value(Tl);
+    return CpS + (CpL - CpS)*(T - Ts)/(Tl - Ts);
 }
 
 
 Foam::scalar Foam::metalProperties::sensibleEnthalpy(const scalar T) const
 {
-    if (T <= Tsolidus())
+    const scalar Ts = Tsolidus();
+    const scalar Tl = Tliquidus();
+
+    if (T <= Ts)
     {
         return CpSolid_->integrate(Tref_, T);
     }
-    if (T < Tliquidus())
+
+    // Mushy range: Cp linear in T between the solid and liquid values
+    const scalar CpS = CpSolid_->value(Ts);
+    const scalar CpL = CpLiquid_->value(Tl);
+    const scalar hs = CpSolid_->integrate(Tref_, Ts);
+    const scalar dT = min(T, Tl) - Ts;
+    const scalar hMushy =
+        hs + CpS*dT + 0.5*(CpL - CpS)*sqr(dT)/(Tl - Ts);
+
+    if (T < Tl)
     {
-        return mushyEnthalpy(T);
+        return hMushy;
     }
-    return hAtLiquidus_ + CpLiquid_->integrate(Tliquidus(), T);
+    return hMushy + CpLiquid_->integrate(Tl, T);
 }
 
 

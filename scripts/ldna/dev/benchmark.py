@@ -22,6 +22,7 @@ variant does the same steps:
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import re
 import shutil
@@ -30,6 +31,7 @@ import statistics
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Iterator
 
 import numpy as np
 from foamlib import FoamFieldFile
@@ -401,6 +403,21 @@ class _Variant:
         return time.perf_counter() - began
 
 
+@contextlib.contextmanager
+def _control_entries(case: Case, **entries: str) -> Iterator[None]:
+    """Set entries of the case's controlDict for one run, and put the
+    written values back after it."""
+    control = "system/controlDict"
+    saved = {entry: case.written(control, entry) for entry in entries}
+    for entry, value in entries.items():
+        case.set(control, entry, value)
+    try:
+        yield
+    finally:
+        for entry, value in saved.items():
+            case.set(control, entry, value)
+
+
 #: Counted instructions: valgrind's callgrind writes its counts before each
 #: time step (Time::operator++), so that every step's count is its own and
 #: the start-up's stays out
@@ -434,44 +451,40 @@ def _counted_instructions(variant: _Variant, start: str, steps: int, delta_t: fl
         raise RuntimeError("counted instructions need valgrind (apt-get install valgrind)")
     if variant.options is not None:
         (variant.case / "constant/fvOptions").write_text(variant.options)
-    control = "system/controlDict"
-    saved = {entry: variant.case.written(control, entry) for entry in ("startTime", "endTime")}
     prefix = variant.case.path / "callgrind" / variant.log_name
     shutil.rmtree(prefix.parent, ignore_errors=True)
     prefix.parent.mkdir()
-    variant.case.set(control, "startTime", start)
     # The first step, the counted ones and one more: the last dump holds the
     # last step and the end
-    variant.case.set(control, "endTime", f"{float(start) + (steps + 2) * delta_t:.9g}")
-    try:
+    with _control_entries(variant.case, startTime=start,
+                          endTime=f"{float(start) + (steps + 2) * delta_t:.9g}"):
         variant.case.run(f"valgrind --tool=callgrind --dump-before='{CALLGRIND_STEP_DUMP}' "
                          f"--callgrind-out-file={prefix} {variant.command}",
                          log_name=f"{variant.log_name}.callgrind")
-    finally:
-        for entry, value in saved.items():
-            variant.case.set(control, entry, value)
     return statistics.mean(callgrind_step_counts(prefix, steps))
 
 
-def _insertion_onsets(case: Case) -> list[float]:
-    """Onsets [s] of the droplets inserted in the latest run of ``case``."""
+def _insertions(case: Case) -> np.ndarray | None:
+    """The droplets inserted in the latest run of ``case``, a row each
+    (the wireDroplets table), or None without one."""
     try:
-        table = case.latest_table("wireDroplets", "insertions")
+        return np.atleast_1d(case.latest_table("wireDroplets", "insertions"))
     except (FileNotFoundError, ValueError):
-        return []
-    return sorted(float(row["Time"]) for row in np.atleast_1d(table))
+        return None
+
+
+def _insertion_onsets(case: Case) -> list[float]:
+    """Times [s] of the droplets inserted in the latest run of ``case``."""
+    table = _insertions(case)
+    return [] if table is None else sorted(float(row["Time"]) for row in table)
 
 
 def _start_up_seconds(variant: _Variant, steps: int, delta_t: float) -> float:
     """Wall time [s] of a run of one step of ``variant``: what a run costs
     before its steps (launch, mesh, fields) and one step."""
-    control = "system/controlDict"
-    end_time = variant.case.written(control, "endTime")
-    variant.case.set(control, "endTime", f"{float(end_time) - (steps - 1) * delta_t:.9g}")
-    try:
+    end_time = float(variant.case.written("system/controlDict", "endTime"))
+    with _control_entries(variant.case, endTime=f"{end_time - (steps - 1) * delta_t:.9g}"):
         return variant.run()
-    finally:
-        variant.case.set(control, "endTime", end_time)
 
 
 def _rounds(variants: dict[str, _Variant], repeats: int, steps: int
@@ -523,12 +536,11 @@ def _droplet_landing(case: Case, start: float, end: float) -> tuple[bool, str]:
     ``end``: its fall from the insertion (the bottom of the sphere) to the
     substrate's surface at the template's droplet speed under gravity, an
     upper bound (a deposit under the wires shortens it)."""
-    try:
-        table = case.latest_table("wireDroplets", "insertions")
-    except (FileNotFoundError, ValueError):
+    table = _insertions(case)
+    if table is None:
         return False, "no insertions table"
     speed = case.scalar("system/caseParameters", "dropletSpeed")
-    for row in np.atleast_1d(table):
+    for row in table:
         onset = float(row["Time"])
         height = float(row["centreZ"]) - float(row["radius"])
         fall = (-speed + math.sqrt(speed**2 + 2 * GRAVITY * height)) / GRAVITY
@@ -710,7 +722,6 @@ def _instruction_counts(variants: dict[str, _Variant], everything: _Variant, sce
     first droplet insertion in ``onsets`` (``begin`` without one), so that
     the counted steps, which follow a first uncounted one, hold the
     insertion."""
-    control = "system/controlDict"
     lead = max(0, math.floor((onsets[0] - begin) / delta_t - 1e-6) - 2) if onsets else 0
 
     def written_at(time: float) -> Path:
@@ -722,16 +733,9 @@ def _instruction_counts(variants: dict[str, _Variant], everything: _Variant, sce
 
     start = written_at(begin)
     if lead > 0:
-        saved = {entry: scene.written(control, entry)
-                 for entry in ("endTime", "writeControl", "writeInterval")}
-        scene.set(control, "endTime", f"{begin + lead * delta_t:.9g}")
-        scene.set(control, "writeControl", "timeStep")
-        scene.set(control, "writeInterval", str(lead))
-        try:
+        with _control_entries(scene, endTime=f"{begin + lead * delta_t:.9g}",
+                              writeControl="timeStep", writeInterval=str(lead)):
             everything.run()
-        finally:
-            for entry, value in saved.items():
-                scene.set(control, entry, value)
         start = written_at(begin + lead * delta_t)
     counts = {}
     for name, variant in variants.items():

@@ -36,6 +36,8 @@ from .material import Metal, two_metals
 METAL_THRESHOLD = 0.5
 #: Relative difference of two slice areas taken as round-off (meltPoolMetrics)
 SLICE_AREA_TOLERANCE = 1e-6
+#: Cell edges across the weld are compared to this many decimals of a metre
+EDGE_DECIMALS = 12
 #: Picture size [pixels]
 WINDOW_SIZE = (1200, 800)
 #: Contour lines drawn this share of the domain size in front of their section
@@ -212,6 +214,22 @@ class _Section:
         in_slice = (centre[:, 2] >= surface_height) & (low[:, 0] <= plane) & (high[:, 0] > plane)
         return cls(low, high, alpha, in_slice, in_slice & (alpha >= metal_threshold))
 
+    def metal_height_profile(self) -> tuple[np.ndarray, np.ndarray]:
+        """The metal height h(y) across the weld (sum of alpha dz over the
+        slice's cells above the surface), exact on the intervals between the
+        cells' edges across the weld: their midpoints and h there.  Cells of
+        different widths (a refined band at the surface under coarser cells)
+        add to every interval they span, so no column is split by them."""
+        # Edges of neighbouring cells equal to round-off are one edge
+        low = np.round(self.low[self.in_slice, 1], EDGE_DECIMALS)
+        high = np.round(self.high[self.in_slice, 1], EDGE_DECIMALS)
+        metal = self.alpha[self.in_slice] * (self.high - self.low)[self.in_slice, 2]
+        edges = np.unique(np.concatenate([low, high]))
+        change = np.zeros(len(edges))
+        np.add.at(change, np.searchsorted(edges, low), metal)
+        np.subtract.at(change, np.searchsorted(edges, high), metal)
+        return 0.5 * (edges[1:] + edges[:-1]), np.cumsum(change)[:-1]
+
     @property
     def toes(self) -> tuple[float, float]:
         """The outer edges across the weld of the bead's metal cells."""
@@ -226,9 +244,7 @@ def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
     section = _Section.of(grid, bead_section, surface_height, metal_threshold)
     if not section.in_bead.any():
         return 0.0
-    centre = 0.5 * (section.low + section.high)
-    height = section.alpha * (section.high - section.low)[:, 2]
-    return wetting_angle(centre[section.in_slice, 1], height[section.in_slice], *section.toes)
+    return wetting_angle(*section.metal_height_profile(), *section.toes)
 
 
 #: Cells whose lower face lies this share of their height from the surface

@@ -139,3 +139,58 @@ def test_first_layer_of_a_wetting_bead_and_of_none() -> None:
     assert first_layer(bead, 1e-3) == (1.0, 0.0)
     bare = _block(0.25e-3, lambda y, z: 1.0 if z < 0 else 0.0)
     assert all(math.isnan(value) for value in first_layer(bare, 1e-3))
+
+
+
+def _layered_block(fine: float, coarse: float, band_top: float, alpha_of) -> "object":
+    """Cells of ``fine`` size in a band on the substrate's surface (z from 0 to
+    ``band_top``) between cells of ``coarse`` size, as the band meshes of the
+    bead study are layered (one coarse cell long in x, y -3-3 mm, z -0.5 to
+    2.5 mm); alpha.metal the share of each cell's section inside the metal,
+    ``alpha_of(y, z)`` (vectorised) sampled on 16 x 16 points of it."""
+    import pyvista as pv
+
+    def block(size: float, z0: float, z1: float):
+        shape = (round(coarse / size), round(6e-3 / size), round((z1 - z0) / size))
+        return pv.ImageData(dimensions=tuple(n + 1 for n in shape), spacing=(size,) * 3,
+                            origin=(0.0, -3e-3, z0)).cast_to_unstructured_grid()
+
+    grid = block(coarse, -0.5e-3, 0.0).merge(block(fine, 0.0, band_top), merge_points=False)
+    grid = grid.merge(block(coarse, band_top, 2.5e-3), merge_points=False)
+    bounds = np.array([grid.get_cell(cell).bounds for cell in range(grid.n_cells)])
+    share = (np.arange(16) + 0.5) / 16
+    ys = bounds[:, 2, None, None] + share[None, :, None] * (bounds[:, 3] - bounds[:, 2])[:, None, None]
+    zs = bounds[:, 4, None, None] + share[None, None, :] * (bounds[:, 5] - bounds[:, 4])[:, None, None]
+    grid.cell_data["alpha.metal"] = alpha_of(*np.broadcast_arrays(ys, zs)).mean(axis=(1, 2))
+    return grid
+
+
+def test_wetting_angle_on_a_band_mesh_of_two_cell_sizes() -> None:
+    """A circular cap of contact angle 60 deg (half-width 2 mm) on a mesh whose
+    first 0.25 mm above the surface has cells half as wide as those above it:
+    the cells of the two sizes are not columns, and the metal height across
+    the weld must still add them all up.  The secant angle (closed form as
+    in test_wetting_angle_of_a_circular_cap: 50.7 deg) is measured on the
+    layered mesh as on a mesh of the fine cells throughout; the toes lie on
+    the outer faces of the fine cells at the surface, up to a cell outside
+    the cap's, which bounds the angle from below."""
+    from ldna.post import bead_wetting_angle
+
+    a, theta = 2e-3, math.radians(60.0)
+    radius, height = a / math.sin(theta), a * math.tan(theta / 2)
+
+    def cap(y: np.ndarray, z: np.ndarray) -> np.ndarray:
+        top = np.sqrt(np.clip(radius**2 - y**2, 0.0, None)) + height - radius
+        return ((z < 0) | (z <= top)).astype(float)
+
+    fine, coarse = 0.0625e-3, 0.125e-3
+    flank = math.sqrt(radius**2 - (radius - height / 2) ** 2)
+    expected = math.degrees(math.atan2(height / 2, a - flank))
+    toe_a_cell_out = math.degrees(math.atan2(height / 2, a - flank + fine))
+    uniform = bead_wetting_angle(_layered_block(fine, fine, 0.25e-3, cap), 0.5 * coarse)
+    layered = bead_wetting_angle(_layered_block(fine, coarse, 0.25e-3, cap), 0.5 * coarse)
+    print(f"secant {expected:.2f} deg ({toe_a_cell_out:.2f} with the toes a cell out); "
+          f"fine cells {uniform:.2f}, layered {layered:.2f}")
+    for measured in (uniform, layered):
+        assert toe_a_cell_out - 0.5 <= measured <= expected + 0.5
+    assert layered == pytest.approx(uniform, abs=1.0)

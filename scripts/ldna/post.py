@@ -38,6 +38,11 @@ METAL_THRESHOLD = 0.5
 SLICE_AREA_TOLERANCE = 1e-6
 #: Cell edges across the weld are compared to this many decimals of a metre
 EDGE_DECIMALS = 12
+#: Share of the bead's height from which its section counts as the bead's
+#: body (bead_body_width): above the toe films of one cell, 0.1-0.5 mm, that
+#: the bead study's meshes lay beside a bead 3.5-4.5 mm high
+#: (docs/accuracy-cost.md)
+BODY_HEIGHT_SHARE = 0.25
 #: Picture size [pixels]
 WINDOW_SIZE = (1200, 800)
 #: Contour lines drawn this share of the domain size in front of their section
@@ -73,9 +78,13 @@ class BeadMetrics:
     #: the substrate)
     first_layer_metal_fraction: float = math.nan
     first_layer_gas: float = math.nan
+    #: Width over which the bead is at least a quarter of its height thick
+    #: [m] (post only): the bead width without thin toe films
+    body_width: float = 0.0
 
     #: What ``ldna post`` reads from the fields, not from the function object
-    POST_ONLY = ("wetting_angle", "first_layer_metal_fraction", "first_layer_gas")
+    POST_ONLY = ("wetting_angle", "first_layer_metal_fraction", "first_layer_gas",
+                 "body_width")
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
@@ -217,7 +226,7 @@ class _Section:
     def metal_height_profile(self) -> tuple[np.ndarray, np.ndarray]:
         """The metal height h(y) across the weld (sum of alpha dz over the
         slice's cells above the surface), exact on the intervals between the
-        cells' edges across the weld: their midpoints and h there.  Cells of
+        cells' edges across the weld: the edges, and h on each interval.  Cells of
         different widths (a refined band at the surface under coarser cells)
         add to every interval they span, so no column is split by them."""
         # Edges of neighbouring cells equal to round-off are one edge
@@ -228,7 +237,7 @@ class _Section:
         change = np.zeros(len(edges))
         np.add.at(change, np.searchsorted(edges, low), metal)
         np.subtract.at(change, np.searchsorted(edges, high), metal)
-        return 0.5 * (edges[1:] + edges[:-1]), np.cumsum(change)[:-1]
+        return edges, np.cumsum(change)[:-1]
 
     @property
     def toes(self) -> tuple[float, float]:
@@ -244,7 +253,24 @@ def bead_wetting_angle(grid, bead_section: float, surface_height: float = 0.0,
     section = _Section.of(grid, bead_section, surface_height, metal_threshold)
     if not section.in_bead.any():
         return 0.0
-    return wetting_angle(*section.metal_height_profile(), *section.toes)
+    edges, height = section.metal_height_profile()
+    return wetting_angle(0.5 * (edges[1:] + edges[:-1]), height, *section.toes)
+
+
+def bead_body_width(grid, bead_section: float, surface_height: float = 0.0,
+                    metal_threshold: float = METAL_THRESHOLD) -> float:
+    """Width [m] across the weld over which the bead in the slice at
+    ``bead_section`` is at least ``BODY_HEIGHT_SHARE`` of its height thick
+    (its metal height profile), outermost to outermost: the bead without
+    the thin films its toes may run out into (0 without a bead there)."""
+    section = _Section.of(grid, bead_section, surface_height, metal_threshold)
+    if not section.in_bead.any():
+        return 0.0
+    edges, height = section.metal_height_profile()
+    if not height.max() > 0:
+        return 0.0
+    body = np.nonzero(height >= BODY_HEIGHT_SHARE * height.max())[0]
+    return float(edges[body[-1] + 1] - edges[body[0]])
 
 
 #: Cells whose lower face lies this share of their height from the surface
@@ -479,6 +505,7 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "expected_bead_area_mm2": 1e6 * expected_bead_area(case),
         "bead_width_mm": 1e3 * result.bead_width,
         "bead_height_mm": 1e3 * result.bead_height,
+        "body_width_mm": 1e3 * result.body_width,
         "penetration_mm": 1e3 * result.penetration,
         "dilution": result.dilution,
         # None (JSON null) with one metal: no composition to measure
@@ -645,6 +672,7 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
     result.wetting_angle = bead_wetting_angle(grid, result.bead_section, surface_height)
     result.first_layer_metal_fraction, result.first_layer_gas = first_layer(
         grid, result.bead_section, surface_height)
+    result.body_width = bead_body_width(grid, result.bead_section, surface_height)
 
     temperature = np.asarray(grid.cell_data["T"])
     if temperature_range is None:
@@ -695,6 +723,7 @@ def format_metrics(result: BeadMetrics) -> str:
         f"pool volume      {1e9 * result.pool_volume:8.2f} mm3",
         f"bead width       {1e3 * result.bead_width:8.2f} mm",
         f"bead height      {1e3 * result.bead_height:8.2f} mm",
+        f"bead body width  {1e3 * result.body_width:8.2f} mm (where a quarter of its height thick)",
         f"bead area        {1e6 * result.bead_area:8.2f} mm2",
         f"fused area       {1e6 * result.fused_area:8.2f} mm2",
         f"bonded width     {1e3 * result.bonded_width:8.2f} mm",

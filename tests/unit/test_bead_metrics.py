@@ -194,3 +194,24 @@ def test_wetting_angle_on_a_band_mesh_of_two_cell_sizes() -> None:
     for measured in (uniform, layered):
         assert toe_a_cell_out - 0.5 <= measured <= expected + 0.5
     assert layered == pytest.approx(uniform, abs=1.0)
+
+
+def test_body_width_leaves_out_a_toe_film() -> None:
+    """A rectangular bead 4 mm wide and 1 mm high whose toes run out into a
+    film 0.0625 mm thick to 2.5 mm either side: the bead width (toe to toe,
+    where the film's cells are metal) is the film's 5 mm, the body width
+    (a quarter of the height thick) the rectangle's 4 mm, on the layered
+    mesh as on the fine one."""
+    from ldna.post import bead_body_width
+
+    fine, coarse = 0.0625e-3, 0.125e-3
+
+    def bead(y: np.ndarray, z: np.ndarray) -> np.ndarray:
+        film = (np.abs(y) <= 2.5e-3) & (z <= fine)
+        return ((z < 0) | ((np.abs(y) <= 2e-3) & (z <= 1e-3)) | film).astype(float)
+
+    for cells in ((fine, fine), (fine, coarse)):
+        width = bead_body_width(_layered_block(*cells, 0.25e-3, bead), 0.5 * coarse)
+        assert width == pytest.approx(4e-3, abs=1e-9)
+    bare = _layered_block(fine, coarse, 0.25e-3, lambda y, z: (z < 0).astype(float))
+    assert bead_body_width(bare, 0.5 * coarse) == 0.0

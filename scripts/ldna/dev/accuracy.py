@@ -68,6 +68,7 @@ LDNA_OUTPUTS = {
     "penetration": ("penetration", "mm", 1e3),
     "bead_height": ("bead height", "mm", 1e3),
     "bead_width": ("bead width", "mm", 1e3),
+    "body_width": ("bead body width (a quarter of its height thick)", "mm", 1e3),
     "bead_area": ("bead area", "mm2", 1e6),
     "wetting_angle": ("wetting angle", "deg", 1.0),
     "first_layer_gas": ("gas film under the bead", "mm", 1e3),
@@ -158,16 +159,17 @@ class BeadScene(LdnaScene):
     steady`` judges its bead quasi-steady (domain balance included), in
     stretches of ``STRETCH`` after the first ``WINDOWS`` shortest windows,
     at most to ``end_time``; its outputs are the window means of the last
-    judged windows (the wetting angle and the gas film under the bead at
-    the last time: ``ldna post`` reads them from the fields).
+    judged windows (the wetting angle, the body width and the gas film
+    under the bead at the last time: ``ldna post`` reads them from the
+    fields).
 
     Start every level from a steady run of the scene (``--start-from``): a
     level then only relaxes to its own resolution's weld."""
 
     name = "bead"
     outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
-        "bead_width", "bead_height", "bead_area", "wetting_angle", "first_layer_gas",
-        "bonded_width",
+        "bead_width", "body_width", "bead_height", "bead_area", "wetting_angle",
+        "first_layer_gas", "bonded_width",
         "penetration", "dilution", "pool_length")}
     #: Errors of the bond's metrics, which are 0 without fusion, are read
     #: against the bead's size in their direction, as ldna steady reads them
@@ -238,6 +240,7 @@ class BeadScene(LdnaScene):
         grid = post.read_case(case.path)
         section = post.configured_bead_section(case.path)
         values["wetting_angle"] = post.bead_wetting_angle(grid, section, 0.0)
+        values["body_width"] = post.bead_body_width(grid, section, 0.0)
         values["first_layer_gas"] = post.first_layer(grid, section, 0.0)[1]
         return values
 

@@ -123,7 +123,7 @@ def _accuracy(args: argparse.Namespace) -> int:
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
                                       end_time=end_time, n_procs=args.np, start=start,
-                                      resume=args.resume)
+                                      resume=args.resume, cost_window=args.cost_window)
     print(accuracy.markdown(study))
     for path in paths:
         print(path)
@@ -449,6 +449,12 @@ def build_parser() -> argparse.ArgumentParser:
                                "and drains slower than the default's ripple periods; give "
                                "it to every leg of a study [ldna steady's default]")
     accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
+    accuracy.add_argument("--cost-window", type=_positive_float, default=None, metavar="S",
+                          help="after the runs, measure each level's cost by a serial run of S "
+                               "simulated seconds from its latest time (in OUTPUT/cost), all "
+                               "levels on this machine now: a study resumed over sessions ran "
+                               "its legs on other machines, beside other work [off: the runs' "
+                               "own CPU time]")
     accuracy.add_argument("--resume", action="store_true",
                           help="continue the members that ran before from their latest "
                                "written time (a study that outlasted a session: run the same "

@@ -59,12 +59,17 @@ def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
     the template for 10 ms from the flat substrate: each level runs, is judged
     (not steady: the deposit reaches the template's section, 11 mm behind the
     wires at 7.5 mm/s, only after 1.47 s) and lands in the table, the plot and
-    accuracy.json; each conserves the metal the wires fed."""
+    accuracy.json; each conserves the metal the wires fed.  The cost comes
+    from a serial window of 2 ms from each level's end (``--cost-window``),
+    which leaves the members as they were: level 0.5 (2.9 times the cells,
+    a shorter capillary time step) costs more per simulated second."""
     from ldna.balance import metal_mass_balance
+    from ldna.case import Case
 
+    window = 0.002
     study, paths = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study",
                                       accuracy.SCENES["bead"], levels=[0, 0.5],
-                                      end_time=0.01)
+                                      end_time=0.01, cost_window=window)
     for path in paths:
         assert path.stat().st_size > 0, path
     written = json.loads((tmp_path / "study" / "accuracy.json").read_text())
@@ -77,6 +82,18 @@ def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
         assert budget.added > 0
         assert budget.relative_residual < 5e-3
     assert written["levels"][1]["cells"] > written["levels"][0]["cells"]
+    assert written["cost_window_s"] == window and written["cost_machine"]
+    for level, member in zip(written["levels"], study.members):
+        assert level["cost_window_steps"] >= 2
+        assert level["core_hours_per_simulated_s"] == pytest.approx(
+            member.window_core_s_per_ms / 3.6, rel=1e-12)
+        assert level["legs_core_hours_per_simulated_s"] > 0
+        # The window ran in a copy: nothing past the member's end was written
+        # into it
+        latest = Case(tmp_path / "study" / "members" / member.name).times[-1]
+        assert float(latest.name) <= 0.01 + 1e-9
+    costs = [level["core_hours_per_simulated_s"] for level in written["levels"]]
+    assert costs[1] > costs[0]
 
 
 def test_band_level_from_the_saved_weld(tmp_path: Path) -> None:

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import shutil
 import time
 from dataclasses import dataclass, field
@@ -29,7 +30,7 @@ from typing import Protocol
 import numpy as np
 
 from .. import meshing
-from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, Case
+from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, TIME_INFO, Case
 from ..foamdict import read_scalars
 from ..steady import MIN_WINDOW as STEADY_MIN_WINDOW
 from ..steady import SCALES as STEADY_SCALES
@@ -313,6 +314,11 @@ class Member:
     steady: bool | None = None
     verdict: str = ""
     first_steady: float | None = None
+    #: Cost measured by a serial window from the member's latest time
+    #: (measure_cost_window): core-seconds per simulated ms and its steps;
+    #: None without one
+    window_core_s_per_ms: float | None = None
+    window_steps: int = 0
 
     @property
     def name(self) -> str:
@@ -322,9 +328,17 @@ class Member:
 
     @property
     def core_seconds_per_ms(self) -> float:
-        """Core-seconds per simulated millisecond: the master rank's CPU time
-        (other work on the machine does not count), or the wall time of a case
-        without the timeInfo table, times the ranks."""
+        """Core-seconds per simulated millisecond: the cost window's where one
+        was measured, else the runs' (legs_core_seconds_per_ms)."""
+        if self.window_core_s_per_ms is not None:
+            return self.window_core_s_per_ms
+        return self.legs_core_seconds_per_ms
+
+    @property
+    def legs_core_seconds_per_ms(self) -> float:
+        """Core-seconds per simulated millisecond of the member's runs: the
+        master rank's CPU time (other work on the machine does not count), or
+        the wall time of a case without the timeInfo table, times the ranks."""
         seconds = self.wall_time if self.cpu_time is None else self.cpu_time
         return seconds * self.n_procs / ((self.end_time - self.start_time) * 1e3)
 
@@ -428,6 +442,49 @@ def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
     return member
 
 
+def measure_cost_window(member_dir: Path, scratch: Path, window: float) -> tuple[float, int]:
+    """Core-seconds per simulated millisecond of a serial run of ``window``
+    simulated seconds from the member's latest reconstructed time, and its
+    steps, the first (start-up) left out.
+
+    The run is a copy in ``scratch`` (the mesh, the setup and that time), so
+    the member stays as it was.  Measured for every level in one call of
+    the study, the costs are of one machine in one state, which the legs of
+    a study resumed over several sessions are not."""
+    source = Case(member_dir)
+    latest = source.times[-1]
+    if scratch.exists():
+        shutil.rmtree(scratch)
+    case = Case.copy_of(source, scratch)
+    shutil.copytree(source / "constant" / "polyMesh", case / "constant" / "polyMesh")
+    shutil.copytree(latest, case / latest.name)
+    start = float(latest.name)
+    control = "system/controlDict"
+    case.set(control, "startFrom", "latestTime")
+    case.set(control, "endTime", f"{start + window:.12g}")
+    # Nothing of the window is kept but its tables
+    case.set(control, "writeInterval", f"{10 * window:g}")
+    case.run("ldnaFoam", 1, log_name="ldnaFoam.costWindow")
+    table = case.latest_table(*TIME_INFO)
+    steps = len(table) - 1
+    if steps < 2:
+        raise RuntimeError(f"{scratch}: the cost window of {window:g} s held {steps + 1} "
+                           f"steps; give a longer --cost-window")
+    simulated = float(table["Time"][-1] - table["Time"][0])
+    return float(table["cpuTime"][-1] - table["cpuTime"][0]) / (simulated * 1e3), steps
+
+
+def cost_machine() -> str:
+    """The processor the cost windows ran on (Linux's /proc/cpuinfo)."""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return f"{line.split(':', 1)[1].strip()}, {os.cpu_count()} cores"
+    except OSError:
+        pass
+    return "unknown"
+
+
 @dataclass
 class Study:
     """The members, the reference and the fitted orders of a study."""
@@ -445,6 +502,10 @@ class Study:
     not_acting: tuple[str, ...] = ()
     #: The three finest levels read without a reference (None with fewer)
     three_level: "dict[str, ThreeLevel] | None" = None
+    #: Simulated time of the serial cost windows [s] and the processor they
+    #: ran on (None: the cost is the members' runs')
+    cost_window: float | None = None
+    cost_machine: str | None = None
 
 
 #: Safety factor of the grid convergence index for three grids (Roache 1994;
@@ -621,6 +682,10 @@ def write_json(study: Study, path: Path) -> None:
             "level": m.level, "max_co": m.max_co, "cell_mm": m.cell_size_mm, "cells": m.cells,
             "n_procs": m.n_procs, "start_time_s": m.start_time, "end_time_s": m.end_time,
             "core_hours_per_simulated_s": finite(m.core_hours_per_simulated_s),
+            # The runs' own cost (over sessions and machines for a resumed
+            # study) and the cost window's steps
+            "legs_core_hours_per_simulated_s": finite(m.legs_core_seconds_per_ms / 3.6),
+            "cost_window_steps": m.window_steps if m.window_core_s_per_ms is not None else None,
             "core_hours_to_steady": m.core_hours_to_steady, "steady": m.steady,
             "first_steady_s": m.first_steady, "verdict": m.verdict,
             **{unit_name(n): finite(m.outputs.get(n, math.nan) * meta[n][2]) for n in meta},
@@ -634,6 +699,10 @@ def write_json(study: Study, path: Path) -> None:
         "not_acting": list(study.not_acting),
         # The steadiness judge's shortest window of a bead study [s]
         "min_window_s": getattr(study.scene, "min_window", None),
+        # Where core_hours_per_simulated_s comes from: a serial window of
+        # this length per level, on this processor (null: the runs)
+        "cost_window_s": study.cost_window,
+        "cost_machine": study.cost_machine,
         # In the output's units; the index relative to the output's size
         "three_level": None if study.three_level is None else {
             n: {"status": t.status, "order": finite(t.order),
@@ -706,6 +775,13 @@ def markdown(study: Study) -> str:
     if study.not_acting:
         lines += ["", "0 at every level, so not judged (no error, order or cheapest "
                   "level): " + ", ".join(meta[n][0] for n in study.not_acting) + "."]
+    if study.cost_window is not None:
+        lines += ["", f"Cost (core-s/ms, core-h per simulated s): a serial window of "
+                  f"{study.cost_window:g} s from each level's latest time, all on "
+                  f"{study.cost_machine}; the runs' own: " + "; ".join(
+                      f"{m.name} {m.legs_core_seconds_per_ms / 3.6:.2f} core-h per simulated s"
+                      for m in study.members) + " (a resumed study's legs may have run on "
+                  "other machines, beside other work)."]
     return "\n".join(lines) + "\n"
 
 
@@ -769,12 +845,16 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
               levels: list[float] | None = None, max_co: list[float] | None = None,
               end_time: float | None = None, n_procs: int = 1,
               start: StartState | None = None,
-              resume: bool = False) -> tuple[Study, list[Path]]:
+              resume: bool = False,
+              cost_window: float | None = None) -> tuple[Study, list[Path]]:
     """Run the members, evaluate them and write CSV, Markdown and PNG into ``out``.
 
     With ``start`` every member starts from that developed state, mapped onto
     its mesh, and runs to ``end_time``: the finer levels then cost a window of
     the process (droplet impacts into a developed pool), not the whole run.
+    With ``cost_window`` each member's cost is then measured by a serial run
+    of that many simulated seconds from its latest time
+    (:func:`measure_cost_window`, in ``out/cost``), all levels in this call.
     """
     template, out = Path(template), Path(out)
     scene = scene or detect_scene(template)
@@ -792,8 +872,19 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
             print(f"  {member.cells} cells, {member.steps} steps, {member.wall_time:.1f} s "
                   f"wall, {member.core_seconds_per_ms:.3g} core-s per simulated ms", flush=True)
             members.append(member)
+    machine = None
+    if cost_window is not None:
+        machine = cost_machine()
+        for member in members:
+            print(f"{scene.name}: cost window of {cost_window:g} s from {member.name}'s "
+                  f"latest time, serial ...", flush=True)
+            member.window_core_s_per_ms, member.window_steps = measure_cost_window(
+                out / "members" / member.name, out / "cost" / member.name, cost_window)
+            print(f"  {member.window_steps} steps, {member.window_core_s_per_ms:.3g} core-s "
+                  f"per simulated ms ({machine})", flush=True)
     exact = scene.exact(Case(out / "members" / members[0].name), members[0].end_time)
     study = evaluate(scene, members, exact)
+    study.cost_window, study.cost_machine = cost_window, machine
     paths = [out / "accuracy.csv", out / "accuracy.md", out / "accuracy.png",
              out / "accuracy.json"]
     write_csv(study, paths[0])

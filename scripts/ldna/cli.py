@@ -120,6 +120,10 @@ def _accuracy(args: argparse.Namespace) -> int:
               f"command with --resume (on another checkout or machine: ldna pack "
               f"{args.output} ARCHIVE here, ldna unpack ARCHIVE {args.output} there)",
               flush=True)
+        if args.resume and args.cost_window is None:
+            print("ldna accuracy: a resumed study's runs may have run on other machines or "
+                  "beside other work; --cost-window 0.04 measures every level's cost on this "
+                  "machine after the runs", flush=True)
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
                                       end_time=end_time, n_procs=args.np, start=start,

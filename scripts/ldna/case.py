@@ -183,6 +183,18 @@ class Case:
         """Lowest and highest metal fraction of any step of the runs."""
         return foamcase.alpha_bounds(self.path)
 
+    def latest_run_cpu_rate(self) -> tuple[float, int]:
+        """CPU seconds of the master rank per simulated second of the latest
+        run (timeInfo), its first step (the start-up) left out, and the
+        steps counted."""
+        table = self.latest_table(*TIME_INFO)
+        steps = len(table) - 1
+        if steps < 2:
+            raise RuntimeError(f"{self.path}: its latest run holds {steps + 1} steps; "
+                               f"run a few more")
+        simulated = float(table["Time"][-1] - table["Time"][0])
+        return float(table["cpuTime"][-1] - table["cpuTime"][0]) / simulated, steps
+
     def seconds_per_step(self) -> float:
         """Mean CPU time per step of the latest run (timeInfo), without the
         first step (start-up)."""

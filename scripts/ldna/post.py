@@ -373,8 +373,10 @@ def wetting_angle(y: np.ndarray, metal_height: np.ndarray, toe_left: float,
                   toe_right: float) -> float:
     """Secant angle [deg] of the bead's flanks, the mean of both sides.
 
-    The section's profile is the metal height h(y) of each column of cells
-    (sum of alpha dz).  On each side the flank runs from the toe (the edge
+    The section's profile is the metal height h(y) at positions ``y``
+    across the weld (values at equal positions are added):
+    :meth:`_Section.metal_height_profile` gives it on the intervals between
+    the cells' edges.  On each side the flank runs from the toe (the edge
     of the bead width, h = 0) to where h first reaches half the bead's
     height; the angle is atan(H/2 / that distance): on the mesh, the contact
     angle cannot be resolved more finely than a cell.

@@ -30,7 +30,7 @@ from typing import Protocol
 import numpy as np
 
 from .. import meshing
-from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, TIME_INFO, Case
+from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, Case
 from ..foamdict import read_scalars
 from ..steady import MIN_WINDOW as STEADY_MIN_WINDOW
 from ..steady import SCALES as STEADY_SCALES
@@ -465,13 +465,8 @@ def measure_cost_window(member_dir: Path, scratch: Path, window: float) -> tuple
     # Nothing of the window is kept but its tables
     case.set(control, "writeInterval", f"{10 * window:g}")
     case.run("ldnaFoam", 1, log_name="ldnaFoam.costWindow")
-    table = case.latest_table(*TIME_INFO)
-    steps = len(table) - 1
-    if steps < 2:
-        raise RuntimeError(f"{scratch}: the cost window of {window:g} s held {steps + 1} "
-                           f"steps; give a longer --cost-window")
-    simulated = float(table["Time"][-1] - table["Time"][0])
-    return float(table["cpuTime"][-1] - table["cpuTime"][0]) / (simulated * 1e3), steps
+    cpu_per_simulated_s, steps = case.latest_run_cpu_rate()
+    return cpu_per_simulated_s / 1e3, steps
 
 
 def cost_machine() -> str:

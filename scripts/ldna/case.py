@@ -196,8 +196,8 @@ class Case:
         return float(table["cpuTime"][-1] - table["cpuTime"][0]) / simulated, steps
 
     def seconds_per_step(self) -> float:
-        """Mean CPU time per step of the latest run (timeInfo), without the
-        first step (start-up)."""
+        """Mean CPU time per step of the latest run (timeInfo), without its
+        first two steps (the start-up and the first solves' set-up)."""
         times = self.latest_table(*TIME_INFO)["cpuTime"]
         if len(times) < 3:
             raise RuntimeError(f"too few steps in {self.path}")

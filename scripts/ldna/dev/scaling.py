@@ -111,16 +111,6 @@ def decomposition(case: Case, split: tuple[int, int, int]) -> Decomposition:
                          int(faces.max()), int(neighbours.max()))
 
 
-def seconds_per_step(case: Path) -> float:
-    """Mean CPU seconds of the master rank per step of the case's latest run
-    (its first step, the start-up, left out)."""
-    table = Case(case).latest_table("timeInfo", "timeInfo")
-    cpu = np.asarray(table["cpuTime"], dtype=float)
-    if len(cpu) < 3:
-        raise ValueError(f"{case}: its timeInfo has {len(cpu)} rows; run a few steps more")
-    return float((cpu[-1] - cpu[0]) / (len(cpu) - 1))
-
-
 @dataclass(frozen=True)
 class Projection:
     """A rank count's projected step and its parts [s]."""
@@ -161,8 +151,8 @@ def scaling(case: Path, serial_run: Path, parallel_run: Path,
             ranks: list[int]) -> tuple[float, float, list[Projection]]:
     """Serial step, two-rank efficiency and the projections along the weld
     (``(n 1 1)``, the template's split) for ``ranks``."""
-    serial = seconds_per_step(serial_run)
-    two = seconds_per_step(parallel_run)
+    serial = Case(serial_run).seconds_per_step()
+    two = Case(parallel_run).seconds_per_step()
     node_efficiency = serial / (2 * two)
     case = Case(case)
     projections = [project(decomposition(case, (n, 1, 1)), serial, node_efficiency)

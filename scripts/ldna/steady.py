@@ -430,16 +430,19 @@ def first_steady(times: np.ndarray, table: dict[str, np.ndarray], start: float |
     return None
 
 
-def case_table(case: Path, section: str = "meltPoolMetrics"
+def case_table(case: Path, section: str = "meltPoolMetrics", names: tuple[str, ...] = METRICS
                ) -> tuple[np.ndarray, dict[str, np.ndarray], float | None]:
-    """Times, the judged metrics and the bead's arrival at the section [s] of
-    the function object ``section`` of ``case``."""
+    """Times, the metrics ``names`` (default: the judged ones; NaN where the
+    table has no such column, as the chemical dilution of one metal) and the
+    bead's arrival at the section [s] of the function object ``section`` of
+    ``case``."""
     rows = post.read_function_object_metrics(case, section)
     # A restart's table repeats the rows after its start time: keep the last
     _, last = np.unique(rows[::-1, 0], return_index=True)
     rows = rows[::-1][last]
     columns = post.BeadMetrics.FUNCTION_OBJECT_COLUMNS
-    table = {name: rows[:, 1 + columns.index(name)] for name in METRICS}
+    table = {name: rows[:, 1 + columns.index(name)] if 1 + columns.index(name) < rows.shape[1]
+             else np.full(len(rows), np.nan) for name in names}
     section_x = rows[-1, 1 + columns.index("bead_section")]
     return rows[:, 0], table, post.bead_arrival_time(case, section_x)
 

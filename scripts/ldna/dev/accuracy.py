@@ -75,6 +75,7 @@ LDNA_OUTPUTS = {
     "first_layer_gas": ("gas film under the bead", "mm", 1e3),
     "bonded_width": ("bonded width", "mm", 1e3),
     "dilution": ("dilution", "-", 1.0),
+    "chemical_dilution": ("chemical dilution (base metal in the bead section)", "-", 1.0),
     "peak_temperature": ("peak metal temperature", "K", 1.0),
     "droplet_fraction": ("largest metal fraction in flight", "-", 1.0),
     "metal_mass": ("metal mass", "g", 1e3),
@@ -171,13 +172,15 @@ class BeadScene(LdnaScene):
     outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
         "bead_width", "body_width", "bead_height", "bead_area", "wetting_angle",
         "first_layer_gas", "bonded_width",
-        "penetration", "dilution", "pool_length")}
+        "penetration", "dilution", "chemical_dilution", "pool_length")}
     #: Errors of the bond's metrics, which are 0 without fusion, are read
     #: against the bead's size in their direction, as ldna steady reads them
     #: (the penetration against the height, the bonded width against the
     #: width, the dilution against 1); the bead's own against themselves
     error_scales = {**{name: scale for name, scale in STEADY_SCALES.items()
                        if name in ("bonded_width", "penetration", "dilution")},
+                    # a share of the bead, as the geometric dilution
+                    "chemical_dilution": None,
                     # 0 where the clad wets its substrate: read against the
                     # height, as the penetration is
                     "first_layer_gas": "bead_height"}
@@ -238,6 +241,13 @@ class BeadScene(LdnaScene):
         verdict = steady.case_steadiness(case.path, min_window=self.min_window)
         values = {name: verdict.metrics[name].mean for name in self.outputs_meta
                   if name in verdict.metrics}
+        # The base metal's share of the bead, over the last judged window
+        # (not judged by ldna steady: without fusion it is the filler
+        # fraction's numerical diffusion)
+        times, table, _ = steady.case_table(case.path, names=("chemical_dilution",))
+        values["chemical_dilution"] = steady.window_mean(
+            times, table["chemical_dilution"], verdict.end_time - verdict.window,
+            verdict.end_time)
         grid = post.read_case(case.path)
         section = post.configured_bead_section(case.path)
         values["wetting_angle"] = post.bead_wetting_angle(grid, section, 0.0)

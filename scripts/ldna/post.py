@@ -81,10 +81,16 @@ class BeadMetrics:
     #: Width over which the bead is at least a quarter of its height thick
     #: [m] (post only): the bead width without thin toe films
     body_width: float = 0.0
+    #: Gas in the cells below the substrate's surface [m3] and their least
+    #: metal fraction [-] (post only): 0 and 1 for a substrate that stays
+    #: solid; a mesh whose faces trade the substrate's metal for the gas
+    #: above shows it here (CHANGELOG: the band's substrate cells)
+    substrate_gas: float = math.nan
+    substrate_least_metal_fraction: float = math.nan
 
     #: What ``ldna post`` reads from the fields, not from the function object
     POST_ONLY = ("wetting_angle", "first_layer_metal_fraction", "first_layer_gas",
-                 "body_width")
+                 "body_width", "substrate_gas", "substrate_least_metal_fraction")
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
@@ -306,6 +312,19 @@ def first_layer(grid, bead_section: float, surface_height: float = 0.0,
             float((width * (1 - metal) * height).sum() / width.sum()))
 
 
+def substrate_gas(grid, surface_height: float = 0.0) -> tuple[float, float]:
+    """Gas volume [m3] in the cells that lie below the substrate's surface
+    (their highest point at or below ``surface_height``), and their least
+    metal fraction; NaN where no cell does."""
+    low, high = _cell_bounds(grid)
+    below = high[:, 2] <= surface_height + SURFACE_ROW_TOLERANCE * (high - low)[:, 2]
+    if not below.any():
+        return math.nan, math.nan
+    alpha = np.clip(np.asarray(grid.cell_data["alpha.metal"], dtype=float), 0.0, 1.0)
+    volume = np.prod(high - low, axis=1)
+    return float(((1 - alpha) * volume)[below].sum()), float(alpha[below].min())
+
+
 #: The function object ``ldna post`` runs at the time it reads (its table:
 #: postProcessing/<name>/<time>/meltPoolMetrics.dat)
 POST_FUNCTION = "postMeltPoolMetrics"
@@ -519,6 +538,10 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
                                        else result.first_layer_metal_fraction),
         "first_layer_gas_mm": (None if math.isnan(result.first_layer_gas)
                                else 1e3 * result.first_layer_gas),
+        "substrate_gas_mm3": (None if math.isnan(result.substrate_gas)
+                              else 1e9 * result.substrate_gas),
+        "substrate_least_metal_fraction": (None if math.isnan(
+            result.substrate_least_metal_fraction) else result.substrate_least_metal_fraction),
         "pool_length_mm": 1e3 * result.pool_length,
         "pool_width_mm": 1e3 * result.pool_width,
         "fused_area_mm2": 1e6 * result.fused_area,
@@ -675,6 +698,8 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
     result.first_layer_metal_fraction, result.first_layer_gas = first_layer(
         grid, result.bead_section, surface_height)
     result.body_width = bead_body_width(grid, result.bead_section, surface_height)
+    result.substrate_gas, result.substrate_least_metal_fraction = substrate_gas(
+        grid, surface_height)
 
     temperature = np.asarray(grid.cell_data["T"])
     if temperature_range is None:
@@ -740,4 +765,6 @@ def format_metrics(result: BeadMetrics) -> str:
         f"wetting angle    {result.wetting_angle:8.1f} deg",
         f"first layer      {100 * result.first_layer_metal_fraction:8.1f} % metal "
         f"(gas film {1e3 * result.first_layer_gas:.3f} mm)",
+        f"substrate gas    {1e9 * result.substrate_gas:8.3f} mm3 (least metal fraction "
+        f"{result.substrate_least_metal_fraction:.4f}; a solid substrate holds none)",
     ])

@@ -215,3 +215,24 @@ def test_body_width_leaves_out_a_toe_film() -> None:
         assert width == pytest.approx(4e-3, abs=1e-9)
     bare = _layered_block(fine, coarse, 0.25e-3, lambda y, z: (z < 0).astype(float))
     assert bead_body_width(bare, 0.5 * coarse) == 0.0
+
+
+@pytest.mark.parametrize("cell", [0.25e-3, 0.125e-3])
+def test_substrate_gas_of_a_substrate_that_took_gas_in(cell: float) -> None:
+    """A substrate 1 mm deep (2 x 6 mm) whose top 0.25 mm row holds 10 % gas
+    in a strip 2 mm wide (|y| < 1 mm) under a bead: 0.1 x 0.25 x 2 x 2 =
+    0.1 mm3 of gas, least metal fraction 0.9 where the row is a cell, and
+    the bead's metal above the surface does not count; a full substrate
+    holds none."""
+    from ldna.post import substrate_gas
+
+    def alpha(y: float, z: float) -> float:
+        if z < 0:
+            return 0.9 if z > -0.25e-3 and abs(y) < 1e-3 else 1.0
+        return 1.0 if abs(y) < 2e-3 and z < 1e-3 else 0.0
+
+    gas, least = substrate_gas(_block(cell, alpha))
+    assert gas == pytest.approx(0.1 * 0.25e-3 * 2e-3 * 2e-3, rel=1e-9)
+    assert least == pytest.approx(0.9)
+    full = _block(cell, lambda y, z: 1.0 if z < 0 or (abs(y) < 2e-3 and z < 1e-3) else 0.0)
+    assert substrate_gas(full) == (0.0, 1.0)

@@ -26,6 +26,12 @@ __all__ = ["BALANCES", "Case", "ENV_SCRIPT", "PROJECT_DIR", "RUN_FUNCTIONS", "Ru
            "TIME_INFO"]
 
 
+#: Steps at a run's start that read the fields and set up the solvers
+#: (the first solves' matrices and preconditioners); cost figures leave
+#: them out
+START_UP_STEPS = 2
+
+
 @dataclass(frozen=True)
 class Case:
     """An ldnaFoam case directory."""
@@ -183,22 +189,23 @@ class Case:
         """Lowest and highest metal fraction of any step of the runs."""
         return foamcase.alpha_bounds(self.path)
 
+    def _latest_run_after_start_up(self) -> np.ndarray:
+        """The latest run's timeInfo rows from the end of its start-up on:
+        its first ``START_UP_STEPS`` steps read the fields and set up the
+        solvers, and a short window would count them."""
+        table = self.latest_table(*TIME_INFO)
+        if len(table) < START_UP_STEPS + 1:
+            raise RuntimeError(f"{self.path}: its latest run holds {len(table)} steps, "
+                               f"{START_UP_STEPS + 1} at least are needed; run a few more")
+        return table[START_UP_STEPS - 1:]
+
     def latest_run_cpu_rate(self) -> tuple[float, int]:
         """CPU seconds of the master rank per simulated second of the latest
-        run (timeInfo), its first step (the start-up) left out, and the
-        steps counted."""
-        table = self.latest_table(*TIME_INFO)
-        steps = len(table) - 1
-        if steps < 2:
-            raise RuntimeError(f"{self.path}: its latest run holds {steps + 1} steps; "
-                               f"run a few more")
+        run after its start-up (timeInfo), and the steps counted."""
+        table = self._latest_run_after_start_up()
         simulated = float(table["Time"][-1] - table["Time"][0])
-        return float(table["cpuTime"][-1] - table["cpuTime"][0]) / simulated, steps
+        return float(table["cpuTime"][-1] - table["cpuTime"][0]) / simulated, len(table) - 1
 
     def seconds_per_step(self) -> float:
-        """Mean CPU time per step of the latest run (timeInfo), without its
-        first two steps (the start-up and the first solves' set-up)."""
-        times = self.latest_table(*TIME_INFO)["cpuTime"]
-        if len(times) < 3:
-            raise RuntimeError(f"too few steps in {self.path}")
-        return float(np.diff(times)[1:].mean())
+        """Mean CPU time per step of the latest run after its start-up (timeInfo)."""
+        return float(np.diff(self._latest_run_after_start_up()["cpuTime"]).mean())

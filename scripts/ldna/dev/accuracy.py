@@ -455,7 +455,7 @@ def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
 def measure_cost_window(member_dir: Path, scratch: Path, window: float) -> tuple[float, int]:
     """Core-seconds per simulated millisecond of a serial run of ``window``
     simulated seconds from the member's latest reconstructed time, and its
-    steps, the first (start-up) left out.
+    steps, the start-up left out (``Case.latest_run_cpu_rate``).
 
     The run is a copy in ``scratch`` (the mesh, the setup and that time), so
     the member stays as it was.  Measured for every level in one call of

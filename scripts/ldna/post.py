@@ -158,11 +158,13 @@ def fused_outline(line: np.ndarray, surface_height: float = 0.0) -> np.ndarray:
     return np.array(points).reshape(-1, 2)
 
 
-def read_case(case: Case | Path, time: float | None = None):
+def read_case(case: Case | Path, time: float | None = None, decomposed: bool | None = None):
     """The internal mesh of ``case`` at ``time`` (default: latest) as a pyvista grid.
 
     Cell data holds the fields, point data their interpolation (for contours).
-    A decomposed case without reconstructed times is read from its processors.
+    ``decomposed``: read the ranks' folders (True) or the reconstructed
+    times (False); by default a decomposed case without reconstructed
+    times is read from its ranks.
     """
     import pyvista as pv
 
@@ -171,7 +173,9 @@ def read_case(case: Case | Path, time: float | None = None):
     foam_file.touch()
     reader = pv.POpenFOAMReader(str(foam_file))
     reader.skip_zero_time = False
-    if len(reader.time_values) <= 1 and (case / "processor0").is_dir():
+    if decomposed is None:
+        decomposed = len(reader.time_values) <= 1 and (case / "processor0").is_dir()
+    if decomposed:
         reader.case_type = "decomposed"
     times = reader.time_values
     reader.set_active_time_value(times[-1] if time is None else

@@ -20,7 +20,7 @@ import gzip
 import shutil
 from pathlib import Path
 
-from .case import Case
+from . import section_fields
 from .case import Case
 from .post import POST_FUNCTION, WELD_START_RECORD
 
@@ -153,7 +153,8 @@ def _reconstruct_latest(case: Case) -> None:
 def pack_run(run: Path, archive: Path) -> Path:
     """Pack ``run`` (a case, or a folder of cases such as a study) into the
     xz-compressed tar ``archive``: per case its dictionaries, mesh, initial
-    and latest reconstructed time and its postProcessing tables (what a
+    and latest reconstructed time, its postProcessing tables and the
+    section's field-read metrics of every written time (what a
     continuation and the tools' verdicts and costs read)."""
     import tarfile
 
@@ -165,6 +166,8 @@ def pack_run(run: Path, archive: Path) -> Path:
     for path in cases:
         case = Case(path)
         _reconstruct_latest(case)
+        # What the bead study reads from the fields it drops (section_fields)
+        section_fields.update(path)
         times = case.times
         kept_times.update(t.resolve() for t in times[:1] + times[-1:])
     case_times = {t.resolve() for path in cases for t in Case(path).times}

@@ -8,6 +8,7 @@ import json
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from ldna.dev import accuracy
@@ -199,3 +200,53 @@ def test_a_study_of_three_levels_reports_them(tmp_path: Path) -> None:
     written = json.loads((tmp_path / "accuracy.json").read_text())["three_level"]
     assert written["bead_width"]["extrapolated"] == pytest.approx(7.0, rel=1e-9)
     assert "three finest levels" in accuracy.markdown(study)
+
+
+def test_field_metrics_are_window_means_of_the_written_fields() -> None:
+    """The metrics only the fields hold are averaged over the fields written
+    in each window (end - window, end]: a ripple sampled every 0.25 s, read
+    over four windows of 1.25 s, gives each window the plain mean of its
+    five fields."""
+    from ldna import section_fields
+
+    times = 12.0 + 0.25 * np.arange(1, 29)
+    # A 0.42 s ripple of 12 deg about a slowly rising mean, as the bead
+    # study's level 0 showed
+    angle = 45.0 + 0.5 * (times - 12.0) + 12.0 * np.sin(2 * math.pi * times / 0.42)
+    rows = {float(t): {"wetting_angle": float(a), "body_width": 0.012, "first_layer_gas": 1e-4}
+            for t, a in zip(times, angle)}
+    ends = 19.0 - 1.25 * np.arange(4)[::-1]
+    means = section_fields.window_means(rows, "wetting_angle", ends, 1.25)
+    for end, mean in zip(ends, means):
+        inside = [a for t, a in zip(times, angle) if end - 1.25 < t - 1e-12 and t <= end + 1e-12]
+        assert len(inside) == 5
+        assert mean == pytest.approx(sum(inside) / 5, rel=1e-12)
+    assert section_fields.times_in_window(rows, 19.0, 1.25) == 5
+    # No field in a window: no mean, not a zero
+    assert math.isnan(section_fields.window_means(rows, "body_width", np.array([30.0]), 1.0)[0])
+
+
+def test_a_bead_study_gives_each_window_mean_its_ripple(tmp_path: Path) -> None:
+    """Each level's outputs carry the standard deviation of their window
+    means: in the table as value ± ripple, in accuracy.json per level in the
+    output's unit, and in the CSV."""
+    scene = accuracy.BeadScene()
+    members = []
+    for level, h, ripple in ((0.0, 0.45, 0.4e-3), (1.0, 0.225, 0.2e-3)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h, wall_time=1.0,
+                                 start_time=12.0, end_time=18.0, steady=True, first_steady=17.0)
+        member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h)}
+        member.ripples = {"bead_width": ripple}
+        member.fields_in_window = 5
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    table = accuracy.markdown(study)
+    assert "8.8 ± 0.4" in table and "7.9 ± 0.2" in table
+    assert "level0 5, level1 5 fields" in table
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    levels = json.loads((tmp_path / "accuracy.json").read_text())["levels"]
+    assert [level["ripples"]["bead_width_mm"] for level in levels] == pytest.approx([0.4, 0.2])
+    accuracy.write_csv(study, tmp_path / "accuracy.csv")
+    assert "bead_width_ripple_mm" in (tmp_path / "accuracy.csv").read_text().splitlines()[0]
+    accuracy.plot(study, tmp_path / "accuracy.png")
+    assert (tmp_path / "accuracy.png").stat().st_size > 0

@@ -156,6 +156,10 @@ def largest_fraction_in_flight(case: Path) -> float:
     return float(alpha.max()) if alpha.size else math.nan
 
 
+#: Rows at the end of the metrics table whose spacing is its interval
+SAMPLING_ROWS = 20
+
+
 class BeadScene(LdnaScene):
     """The LDNA template's quasi-steady bead: each level runs until ``ldna
     steady`` judges its bead quasi-steady (domain balance included), in
@@ -221,6 +225,7 @@ class BeadScene(LdnaScene):
         while True:
             case.set(control, "endTime", f"{target:g}")
             case.run("ldnaFoam", member.n_procs, log_name=f"ldnaFoam.{target:g}")
+            self.run_stretch_done(case)
             # Later stretches continue from the latest written time
             case.set(control, "startFrom", "latestTime")
             verdict = steady.case_steadiness(case.path, min_window=self.min_window)
@@ -235,25 +240,52 @@ class BeadScene(LdnaScene):
                                                   self.min_window,
                                                   balance=steady.DomainBalance.of(case.path))
 
-    def outputs(self, case: Case) -> dict[str, float]:
-        from .. import post, steady
+    def outputs(self, case: Case) -> "WindowMeans":
+        """Every output's mean over the last judged window, and its ripple:
+        the standard deviation of its means over the ``steady.WINDOWS``
+        judged windows.  The section's metrics come from meltPoolMetrics'
+        table, those only the fields hold (wetting angle, body width, gas
+        film) from the fields written in the windows (``section_fields``)."""
+        from .. import section_fields, steady
 
         verdict = steady.case_steadiness(case.path, min_window=self.min_window)
-        values = {name: verdict.metrics[name].mean for name in self.outputs_meta
-                  if name in verdict.metrics}
-        # The base metal's share of the bead, over the last judged window
-        # (not judged by ldna steady: without fusion it is the filler
-        # fraction's numerical diffusion)
-        times, table, _ = steady.case_table(case.path, names=("chemical_dilution",))
-        values["chemical_dilution"] = steady.window_mean(
-            times, table["chemical_dilution"], verdict.end_time - verdict.window,
-            verdict.end_time)
-        grid = post.read_case(case.path)
-        section = post.configured_bead_section(case.path)
-        values["wetting_angle"] = post.bead_wetting_angle(grid, section, 0.0)
-        values["body_width"] = post.bead_body_width(grid, section, 0.0)
-        values["first_layer_gas"] = post.first_layer(grid, section, 0.0)[1]
-        return values
+        ends = verdict.end_time - verdict.window * np.arange(steady.WINDOWS)[::-1]
+        tabled = [name for name in self.outputs_meta
+                  if name not in section_fields.COLUMNS]
+        times, table, _ = steady.case_table(case.path, names=tuple(tabled))
+        means = {name: np.array([steady.window_mean(times, table[name], end - verdict.window,
+                                                    end) for end in ends])
+                 for name in tabled}
+        rows = section_fields.update(case.path)
+        # The table's last row lies up to one of its intervals before the
+        # run's last written field: the fields' windows end there
+        field_ends = ends + float(np.median(np.diff(times[-SAMPLING_ROWS:])))
+        for name in section_fields.COLUMNS:
+            means[name] = section_fields.window_means(rows, name, field_ends, verdict.window)
+        return WindowMeans(
+            {name: float(m[-1]) for name, m in means.items()},
+            ripples={name: float(np.std(m, ddof=1)) for name, m in means.items()},
+            fields_in_window=section_fields.times_in_window(rows, field_ends[-1],
+                                                            verdict.window))
+
+    def run_stretch_done(self, case: Case) -> None:
+        """Read the fields the stretch wrote while they are there (a packed
+        study keeps its first and latest fields only)."""
+        from .. import section_fields
+
+        section_fields.update(case.path)
+
+
+class WindowMeans(dict):
+    """Outputs (name -> SI value) that are window means, with each one's
+    ripple (the standard deviation of its window means, SI) and how many
+    written fields the last window held."""
+
+    def __init__(self, values: dict[str, float], ripples: dict[str, float],
+                 fields_in_window: int) -> None:
+        super().__init__(values)
+        self.ripples = ripples
+        self.fields_in_window = fields_in_window
 
 
 class StefanScene:
@@ -319,6 +351,11 @@ class Member:
     end_time: float = math.nan
     outputs: dict[str, float] = field(default_factory=dict)
     errors: dict[str, float] = field(default_factory=dict)
+    #: Outputs that are window means (bead scene): the standard deviation of
+    #: each one's judged windows' means (SI), and the written fields of the
+    #: last window (what the field-read outputs average)
+    ripples: dict[str, float] = field(default_factory=dict)
+    fields_in_window: int | None = None
     #: Bead scene: judged quasi-steady at the end, why (not), and the first
     #: time it was [s]
     steady: bool | None = None
@@ -448,7 +485,10 @@ def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
         case.reconstruct()
     # Rows of the runs' balance table: the initial state and one per step
     member.steps = len(case.balances()) - 1
-    member.outputs = scene.outputs(case)
+    outputs = scene.outputs(case)
+    member.outputs = dict(outputs)
+    member.ripples = getattr(outputs, "ripples", {})
+    member.fields_in_window = getattr(outputs, "fields_in_window", None)
     return member
 
 
@@ -695,6 +735,12 @@ def write_json(study: Study, path: Path) -> None:
             "first_steady_s": m.first_steady, "verdict": m.verdict,
             **{unit_name(n): finite(m.outputs.get(n, math.nan) * meta[n][2]) for n in meta},
             "errors": {n: finite(m.errors.get(n, math.nan)) for n in meta},
+            # Window means (bead scene): the standard deviation of each
+            # output's judged windows' means, in its unit, and the fields
+            # the last window held
+            "ripples": {unit_name(n): finite(m.ripples[n] * meta[n][2])
+                        for n in meta if n in m.ripples},
+            "fields_in_window": m.fields_in_window,
         })
     path.write_text(json.dumps({
         "scene": study.scene.name, "reference": study.reference_name,
@@ -724,7 +770,8 @@ def write_csv(study: Study, path: Path) -> None:
         writer.writerow(["level", "max_co", "cell_size_mm", "cells", "n_procs", "steps",
                          "wall_time_s", "core_s_per_sim_ms"]
                         + [f"{n}_{study.scene.outputs_meta[n][1]}" for n in names]
-                        + [f"{n}_rel_error" for n in names])
+                        + [f"{n}_rel_error" for n in names]
+                        + [f"{n}_ripple_{study.scene.outputs_meta[n][1]}" for n in names])
         for m in study.members:
             writer.writerow(
                 [meshing.level_name(m.level), "" if m.max_co is None else f"{m.max_co:g}",
@@ -732,7 +779,9 @@ def write_csv(study: Study, path: Path) -> None:
                  f"{m.core_seconds_per_ms:.6g}"]
                 + [f"{m.outputs.get(n, math.nan) * study.scene.outputs_meta[n][2]:.8g}"
                    for n in names]
-                + [f"{m.errors.get(n, math.nan):.6g}" for n in names])
+                + [f"{m.errors.get(n, math.nan):.6g}" for n in names]
+                + [f"{m.ripples.get(n, math.nan) * study.scene.outputs_meta[n][2]:.6g}"
+                   for n in names])
 
 
 def markdown(study: Study) -> str:
@@ -749,8 +798,10 @@ def markdown(study: Study) -> str:
         for n in names:
             value = m.outputs.get(n, math.nan) * meta[n][2]
             error = m.errors.get(n, math.nan)
-            cells.append(f"{value:.4g} ({100 * error:.2f} %)" if math.isfinite(error)
-                         else f"{value:.4g}")
+            text = f"{value:.4g}"
+            if n in m.ripples:
+                text += f" ± {m.ripples[n] * meta[n][2]:.2g}"
+            cells.append(f"{text} ({100 * error:.2f} %)" if math.isfinite(error) else text)
         lines.append("| " + " | ".join(cells) + " |")
     reference = ", ".join(f"{meta[n][0]} {study.reference[n] * meta[n][2]:.5g} {meta[n][1]}"
                           for n in names if n in study.reference)
@@ -759,6 +810,14 @@ def markdown(study: Study) -> str:
     lines += ["", f"Errors are relative to the {study.reference_name}: {reference}.",
               f"Observed order of convergence (slope of log error over log cell size): "
               f"{orders or 'not enough non-zero errors to fit'}."]
+    if any(m.ripples for m in study.members):
+        lines += ["", "Each value is its mean over the last judged window; ± its ripple, the "
+                  "standard deviation of its means over the judged windows (an error below "
+                  "the ripples of the two levels compared is not resolved).  The wetting "
+                  "angle, body width and gas film are means of the fields written in the "
+                  "windows (last window: " + ", ".join(
+                      f"{m.name} {m.fields_in_window}" for m in study.members
+                      if m.fields_in_window is not None) + " fields)."]
     if any(m.steady is not None for m in study.members):
         window = getattr(study.scene, "min_window", STEADY_MIN_WINDOW)
         lines += ["", f"Quasi-steady (`ldna steady`, windows of at least {window:g} s): " + "; ".join(
@@ -818,11 +877,19 @@ def plot(study: Study, path: Path) -> None:
         cost, error, members = zip(*points)
         order = study.orders.get(name, math.nan)
         three = (study.three_level or {}).get(name)
-        axes.loglog(cost, error, "o-", label=meta[name][0]
-                    + (f" (order {order:.2f})" if math.isfinite(order) else "")
-                    + ("" if three is None else
-                       f", 3 finest: GCI {100 * three.gci:.2g} %" if three.status == "converging"
-                       else f", 3 finest: {three.status}"))
+        # The ripples of the level and the reference, as the error is read
+        finest = study.reference_member
+        size = error_scale(getattr(study.scene, "error_scales", {}), study.reference, name)
+        spread = [math.hypot(m.ripples.get(name, 0.0),
+                             0.0 if finest is None else finest.ripples.get(name, 0.0))
+                  / size for m in members]
+        label = (meta[name][0] + (f" (order {order:.2f})" if math.isfinite(order) else "")
+                 + ("" if three is None else
+                    f", 3 finest: GCI {100 * three.gci:.2g} %" if three.status == "converging"
+                    else f", 3 finest: {three.status}"))
+        # A log axis has no zero: the lower bar stops just above it
+        lower = [min(d, 0.999 * e) for d, e in zip(spread, error)]
+        axes.errorbar(cost, error, yerr=[lower, spread], fmt="o-", capsize=3, label=label)
         for c, e, m in zip(cost, error, members):
             axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
                           xytext=(4, 4), fontsize=7)
@@ -833,6 +900,8 @@ def plot(study: Study, path: Path) -> None:
         axes.annotate(f"reference: {reference.name}", (reference.core_hours_per_simulated_s, 0.02),
                       xycoords=("data", "axes fraction"), rotation=90, fontsize=7,
                       xytext=(-10, 0), textcoords="offset points", color="grey")
+    axes.set_xscale("log")
+    axes.set_yscale("log")
     axes.set_xlabel("core-hours per simulated second")
     axes.set_ylabel(f"relative error against the {study.reference_name}")
     axes.set_title(f"{study.scene.name} scene: accuracy against cost")

@@ -869,7 +869,9 @@ def plot(study: Study, path: Path) -> None:
 
     meta = study.scene.outputs_meta
     figure, axes = plt.subplots(figsize=(7, 5))
-    for name in meta:
+    # More outputs than the default cycle's ten colours
+    colours = plt.get_cmap("tab20")
+    for index, name in enumerate(meta):
         points = sorted((m.core_hours_per_simulated_s, m.errors.get(name, math.nan), m)
                         for m in study.members if m.errors.get(name, 0) > 0)
         if not points:
@@ -889,7 +891,8 @@ def plot(study: Study, path: Path) -> None:
                     else f", 3 finest: {three.status}"))
         # A log axis has no zero: the lower bar stops just above it
         lower = [min(d, 0.999 * e) for d, e in zip(spread, error)]
-        axes.errorbar(cost, error, yerr=[lower, spread], fmt="o-", capsize=3, label=label)
+        axes.errorbar(cost, error, yerr=[lower, spread], fmt="o-", capsize=3, label=label,
+                      color=colours(index % colours.N))
         for c, e, m in zip(cost, error, members):
             axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
                           xytext=(4, 4), fontsize=7)

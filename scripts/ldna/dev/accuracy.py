@@ -827,8 +827,19 @@ def markdown(study: Study) -> str:
             + f", {m.core_hours_per_simulated_s:.2f} core-h per simulated s"
             for m in study.members) + "."]
     cheapest = cheapest_levels(study)
+    finest = study.reference_member
+    scales = getattr(study.scene, "error_scales", {})
+
+    def reference_ripple(name: str) -> str:
+        # How well the reference itself is known, as its errors are read
+        if finest is None or name not in finest.ripples:
+            return ""
+        size = error_scale(scales, study.reference, name)
+        return f" (its ripple {100 * finest.ripples[name] / size:.2g} %)" if size > 0 else ""
+
     lines += ["", "Cheapest level within 5 % / 10 % of the reference: " + "; ".join(
         f"{meta[n][0]} {_level_or_finer(c['5%'])} / {_level_or_finer(c['10%'])}"
+        + reference_ripple(n)
         for n, c in cheapest.items() if n not in study.not_acting) + "."]
     if study.three_level:
         lines += ["", "The three finest levels on their own (Celik et al. 2008; the grid "

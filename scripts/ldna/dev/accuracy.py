@@ -259,7 +259,8 @@ class BeadScene(LdnaScene):
         rows = section_fields.update(case.path)
         # The table's last row lies up to one of its intervals before the
         # run's last written field: the fields' windows end there
-        field_ends = ends + float(np.median(np.diff(times[-SAMPLING_ROWS:])))
+        interval = float(np.median(np.diff(times[-SAMPLING_ROWS:]))) if times.size > 1 else 0.0
+        field_ends = ends + interval
         for name in section_fields.COLUMNS:
             means[name] = section_fields.window_means(rows, name, field_ends, verdict.window)
         return WindowMeans(

@@ -99,19 +99,21 @@ def update(case: Path, surface_height: float = 0.0) -> dict[float, dict[str, flo
     return rows
 
 
+def _in_window(times: np.ndarray, end: float, window: float) -> np.ndarray:
+    """Which ``times`` lie in the window (end - window, end]."""
+    return (times > end - window + TIME_TOLERANCE) & (times <= end + TIME_TOLERANCE)
+
+
 def window_means(rows: dict[float, dict[str, float]], name: str, ends: np.ndarray,
                  window: float) -> np.ndarray:
     """Means of ``name`` over the times in each window (end - window, end]
     (NaN for a window that holds no written time)."""
     times = np.array(sorted(rows))
     values = np.array([rows[t][name] for t in times])
-    means = []
-    for end in ends:
-        inside = (times > end - window + TIME_TOLERANCE) & (times <= end + TIME_TOLERANCE)
-        means.append(float(values[inside].mean()) if inside.any() else math.nan)
-    return np.array(means)
+    return np.array([float(values[inside].mean()) if inside.any() else math.nan
+                     for inside in (_in_window(times, end, window) for end in ends)])
 
 
 def times_in_window(rows: dict[float, dict[str, float]], end: float, window: float) -> int:
     """How many written times the window (end - window, end] holds."""
-    return sum(1 for t in rows if end - window + TIME_TOLERANCE < t <= end + TIME_TOLERANCE)
+    return int(_in_window(np.array(sorted(rows)), end, window).sum())

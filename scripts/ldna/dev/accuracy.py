@@ -156,10 +156,6 @@ def largest_fraction_in_flight(case: Path) -> float:
     return float(alpha.max()) if alpha.size else math.nan
 
 
-#: Rows at the end of the metrics table whose spacing is its interval
-SAMPLING_ROWS = 20
-
-
 class BeadScene(LdnaScene):
     """The LDNA template's quasi-steady bead: each level runs until ``ldna
     steady`` judges its bead quasi-steady (domain balance included), in
@@ -204,7 +200,7 @@ class BeadScene(LdnaScene):
         return self.mesh_level(case, level)
 
     def run(self, case: Case, member: "Member") -> None:
-        from .. import post, steady
+        from .. import post, section_fields, steady
 
         control = "system/controlDict"
         # Every stretch's end is written, so that a stopped study resumes
@@ -225,7 +221,9 @@ class BeadScene(LdnaScene):
         while True:
             case.set(control, "endTime", f"{target:g}")
             case.run("ldnaFoam", member.n_procs, log_name=f"ldnaFoam.{target:g}")
-            self.run_stretch_done(case)
+            # Read the fields the stretch wrote while they are there (a
+            # packed study keeps only its first and latest)
+            section_fields.update(case.path)
             # Later stretches continue from the latest written time
             case.set(control, "startFrom", "latestTime")
             verdict = steady.case_steadiness(case.path, min_window=self.min_window)
@@ -257,10 +255,11 @@ class BeadScene(LdnaScene):
                                                     end) for end in ends])
                  for name in tabled}
         rows = section_fields.update(case.path)
-        # The table's last row lies up to one of its intervals before the
-        # run's last written field: the fields' windows end there
-        interval = float(np.median(np.diff(times[-SAMPLING_ROWS:]))) if times.size > 1 else 0.0
-        field_ends = ends + interval
+        # The table's last row lies a few steps before the run's last
+        # written field: the fields' windows end at that field
+        latest = max(rows, default=verdict.end_time)
+        offset = latest - verdict.end_time
+        field_ends = ends + (offset if 0 <= offset < verdict.window else 0.0)
         for name in section_fields.COLUMNS:
             means[name] = section_fields.window_means(rows, name, field_ends, verdict.window)
         return WindowMeans(
@@ -268,13 +267,6 @@ class BeadScene(LdnaScene):
             ripples={name: float(np.std(m, ddof=1)) for name, m in means.items()},
             fields_in_window=section_fields.times_in_window(rows, field_ends[-1],
                                                             verdict.window))
-
-    def run_stretch_done(self, case: Case) -> None:
-        """Read the fields the stretch wrote while they are there (a packed
-        study keeps its first and latest fields only)."""
-        from .. import section_fields
-
-        section_fields.update(case.path)
 
 
 class WindowMeans(dict):

@@ -21,9 +21,10 @@ import numpy as np
 import pytest
 
 from solver_cases import prepare_test_case
+from ldna import section_fields
 from ldna.case import Case
 from ldna.material import Metal
-from ldna.post import BeadMetrics, configured_bead_section, function_object_metrics, fusion_temperature, post_process, read_function_object_metrics
+from ldna.post import BODY_HEIGHT_SHARE, BeadMetrics, configured_bead_section, function_object_metrics, fusion_temperature, post_process, read_function_object_metrics
 
 #: Cell size of the synthetic case [m] (tests/cases/syntheticPool)
 CELL = 0.5e-3
@@ -50,6 +51,13 @@ FRACTION_SAMPLES = 40
 #: Preset liquid pool of the run (template coordinates [m]) and its temperature [K]
 PRESET_POOL_BOX = "(0.008 -0.004 -0.003) (0.022 0.004 0)"
 PRESET_POOL_TEMPERATURE = 2000.0
+#: Transverse section of the bead's field-read metrics [m]: on the bead,
+#: over the pool
+FIELD_SECTION = 12e-3
+#: Largest relative difference between the field-read metrics of the ranks'
+#: folders and of the reconstructed time (the same numbers, summed in
+#: another order)
+RANKS_AGREEMENT = 1e-9
 #: Largest relative difference between two evaluations of the function
 #: object (serial and parallel; during a run and by ldna post from the fields
 #: written with 12 digits)
@@ -189,6 +197,45 @@ def test_metrics_of_a_prescribed_pool(synthetic_pool_case: Case, tmp_path: Path)
     check_against_prescribed(parallel_result, "function object, 2 ranks", pool_radius)
 
     check_agreement(serial_result, parallel_result)
+
+
+def test_section_fields_of_the_ranks_folders(synthetic_pool_case: Case, tmp_path: Path) -> None:
+    """The bead study's field-read metrics (``ldna.section_fields``) of a
+    time that only the ranks' folders hold, as a running decomposed study
+    has it, equal those of the same time reconstructed, and are the
+    prescribed bead's.  The two ranks split the section across the weld
+    (decomposeParDict: y), so a reader that saw one rank would halve the
+    body width."""
+    case = synthetic_pool_case
+    case.set("system/controlDict", "functions/meltPoolMetrics/beadSection",
+             f"{FIELD_SECTION:g}", create=True)
+    # A written time after 0: the table skips the initial fields
+    shutil.copytree(case / "0", case / "1")
+    ranks = Case(Path(shutil.copytree(case, tmp_path / "ranks")))
+    ranks.run("decomposePar -time 1")
+    shutil.rmtree(ranks / "1")
+
+    reconstructed = section_fields.update(case.path)
+    decomposed = section_fields.update(ranks.path)
+    assert list(reconstructed) == list(decomposed) == [1.0]
+    kept = section_fields.read(ranks.path)
+    for name in section_fields.COLUMNS:
+        # the table keeps 9 significant digits
+        assert kept[1.0][name] == pytest.approx(decomposed[1.0][name], rel=1e-8), name
+    for name in section_fields.COLUMNS:
+        print(f"{name}: ranks {decomposed[1.0][name]:.6g}, reconstructed {reconstructed[1.0][name]:.6g}")
+        assert decomposed[1.0][name] == pytest.approx(reconstructed[1.0][name], rel=RANKS_AGREEMENT,
+                                                      abs=1e-15), name
+
+    # The prescribed half-ellipse: thicker than its body share of its height
+    # (BODY_HEIGHT_SHARE) over 2 a sqrt(1 - share^2); the profile's edges lie on cell faces, each
+    # within a cell of the exact point
+    body = 2 * BEAD_HALF_WIDTH * math.sqrt(1 - BODY_HEIGHT_SHARE ** 2)
+    assert abs(decomposed[1.0]["body_width"] - body) <= 2 * CELL
+    # It stands on the substrate's surface: gas only where its flanks are
+    # lower than the first layer of cells, near the toes
+    assert 0 <= decomposed[1.0]["first_layer_gas"] < CELL / 10
+    assert 0 < decomposed[1.0]["wetting_angle"] <= 90
 
 
 def test_post_writes_pictures_headless(synthetic_pool_case: Case) -> None:

@@ -104,6 +104,10 @@ def _accuracy(args: argparse.Namespace) -> int:
             print("ldna accuracy: --start-from needs --start-time", file=sys.stderr)
             return 2
         start = accuracy.StartState(Path(args.start_from), args.start_time)
+    if args.sequence and start is None:
+        print("ldna accuracy: --sequence starts the first level from --start-from: give it",
+              file=sys.stderr)
+        return 2
     end_time = args.end_time
     if args.min_window is not None:
         if not isinstance(scene, accuracy.BeadScene):
@@ -115,8 +119,10 @@ def _accuracy(args: argparse.Namespace) -> int:
     if isinstance(scene, accuracy.BeadScene):
         if end_time is None:
             end_time = (start.time if start else 0.0) + scene.MAX_SPAN
-        print(f"ldna accuracy: each level runs until its bead is quasi-steady, at most to "
-              f"{end_time:g} s, writing every {scene.STRETCH:g} s; if it stops, run the same "
+        limit = (f"at most {end_time - start.time:g} s from its start" if args.sequence
+                 else f"at most to {end_time:g} s")
+        print(f"ldna accuracy: each level runs until its bead is quasi-steady, {limit}, "
+              f"writing every {scene.STRETCH:g} s; if it stops, run the same "
               f"command with --resume (on another checkout or machine: ldna pack "
               f"{args.output} ARCHIVE here, ldna unpack ARCHIVE {args.output} there)",
               flush=True)
@@ -127,7 +133,8 @@ def _accuracy(args: argparse.Namespace) -> int:
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
                                       end_time=end_time, n_procs=args.np, start=start,
-                                      resume=args.resume, cost_window=args.cost_window)
+                                      resume=args.resume, cost_window=args.cost_window,
+                                      sequence=args.sequence)
     print(accuracy.markdown(study))
     for path in paths:
         print(path)
@@ -452,6 +459,11 @@ def build_parser() -> argparse.ArgumentParser:
                                "seconds (as ldna steady --min-window), for a weld that fills "
                                "and drains slower than the default's ripple periods; give "
                                "it to every leg of a study [ldna steady's default]")
+    accuracy.add_argument("--sequence", action="store_true",
+                          help="with --start-from: only the first level starts from it; each "
+                               "later level starts from the latest time of the level before "
+                               "(the bead scene: its quasi-steady weld) and may run as long "
+                               "from there as the first from --start-time to --end-time")
     accuracy.add_argument("--np", type=_positive_int, default=1, help="MPI ranks per run (1: serial)")
     accuracy.add_argument("--cost-window", type=_positive_float, default=None, metavar="S",
                           help="after the runs, measure each level's cost by a serial run of S "

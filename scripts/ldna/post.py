@@ -481,6 +481,23 @@ def weld_start_time(case: Path) -> float:
     return max(starts, default=0.0)
 
 
+def weld_start_state(case: Path) -> tuple[str, float] | None:
+    """The folder name of the run whose state the case's weld started from
+    and that start's time (the latest such start), or None for a weld that
+    started on the case's own fields."""
+    name, file = WELD_START_RECORD
+    starts = []
+    for record in (Path(case) / "postProcessing" / name).glob(f"*/{file}.dat"):
+        lines = record.read_text().splitlines()
+        source = next((line.rsplit(" ", 1)[-1] for line in lines if line.startswith("#")), "")
+        starts += [(float(line), Path(source).name) for line in lines
+                   if line.strip() and not line.startswith("#")]
+    if not starts:
+        return None
+    time, source = max(starts)
+    return source, time
+
+
 #: The record of ``ldna steady-start`` that a case's time-0 fields are its
 #: estimate: postProcessing/<name>/0/<file>.dat
 STEADY_START_RECORD = ("steadyStart", "estimate")

@@ -354,6 +354,9 @@ class Member:
     steady: bool | None = None
     verdict: str = ""
     first_steady: float | None = None
+    #: The run (folder name) and time whose state the member's weld started
+    #: from (the weldStart record of Allrun -start-from), or None
+    started_from: tuple[str, float] | None = None
     #: Cost measured by a serial window from the member's latest time
     #: (measure_cost_window): core-seconds per simulated ms and its steps;
     #: None without one
@@ -465,6 +468,8 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
 
 
 def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
+    from ..post import weld_start_state
+
     began = time.perf_counter()
     scene.run(case, member)
     member.wall_time = time.perf_counter() - began
@@ -478,6 +483,7 @@ def _run_and_measure(case: Case, scene: Scene, member: Member) -> Member:
         case.reconstruct()
     # Rows of the runs' balance table: the initial state and one per step
     member.steps = len(case.balances()) - 1
+    member.started_from = weld_start_state(case.path)
     outputs = scene.outputs(case)
     member.outputs = dict(outputs)
     member.ripples = getattr(outputs, "ripples", {})
@@ -719,6 +725,8 @@ def write_json(study: Study, path: Path) -> None:
         levels.append({
             "level": m.level, "max_co": m.max_co, "cell_mm": m.cell_size_mm, "cells": m.cells,
             "n_procs": m.n_procs, "start_time_s": m.start_time, "end_time_s": m.end_time,
+            "started_from": (None if m.started_from is None else
+                             {"run": m.started_from[0], "time_s": m.started_from[1]}),
             "core_hours_per_simulated_s": finite(m.core_hours_per_simulated_s),
             # The runs' own cost (over sessions and machines for a resumed
             # study) and the cost window's steps
@@ -927,12 +935,19 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
               end_time: float | None = None, n_procs: int = 1,
               start: StartState | None = None,
               resume: bool = False,
-              cost_window: float | None = None) -> tuple[Study, list[Path]]:
+              cost_window: float | None = None,
+              sequence: bool = False) -> tuple[Study, list[Path]]:
     """Run the members, evaluate them and write CSV, Markdown and PNG into ``out``.
 
     With ``start`` every member starts from that developed state, mapped onto
     its mesh, and runs to ``end_time``: the finer levels then cost a window of
     the process (droplet impacts into a developed pool), not the whole run.
+    With ``sequence`` (and ``start``) only the first level starts from it;
+    each later level starts from the latest time of the level before it (for
+    the bead scene its quasi-steady weld), mapped onto its own mesh, and may
+    run as long from its start as the first may (``end_time`` - start): a
+    finer level then relaxes from the nearest resolution's weld, not from
+    the coarsest one's.
     With ``cost_window`` each member's cost is then measured by a serial run
     of that many simulated seconds from its latest time
     (:func:`measure_cost_window`, in ``out/cost``), all levels in this call.
@@ -943,13 +958,32 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
     if len(levels) < 2:
         raise ValueError("give at least two levels")
     out.mkdir(parents=True, exist_ok=True)
+    if sequence and start is None:
+        raise ValueError("sequenced levels start from the level before, the first from a "
+                         "developed state: give start")
     members = []
     for co in (max_co or [None]):
+        previous = None
         for level in levels:
             member = Member(level=level, max_co=co, cell_size_mm=math.nan)
+            directory = out / "members" / member.name
+            level_start, level_end = start, end_time
+            if sequence and previous is not None:
+                level_start = StartState(out / "members" / previous.name, previous.end_time)
+                if end_time is not None:
+                    # As long from its own start (a resumed member's may
+                    # be another: it ran before)
+                    began = (Case(directory).scalar("system/controlDict", "startTime")
+                             if resume and (directory / "system" / "controlDict").is_file()
+                             else level_start.time)
+                    level_end = began + (end_time - start.time)
+                if previous.steady is False:
+                    print(f"  {previous.name} was not judged quasi-steady: {member.name} "
+                          f"starts from its latest time all the same", flush=True)
             print(f"{scene.name}: running {member.name} ...", flush=True)
-            run_member(template, out / "members" / member.name, scene, member, end_time, n_procs,
-                       start, resume)
+            run_member(template, directory, scene, member, level_end, n_procs, level_start,
+                       resume)
+            previous = member
             print(f"  {member.cells} cells, {member.steps} steps, {member.wall_time:.1f} s "
                   f"wall, {member.core_seconds_per_ms:.3g} core-s per simulated ms", flush=True)
             members.append(member)

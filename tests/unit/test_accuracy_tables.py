@@ -134,6 +134,26 @@ def test_a_bead_study_states_its_steadiness_window(tmp_path: Path) -> None:
     assert json.loads((tmp_path / "accuracy.json").read_text())["min_window_s"] == 1.0
 
 
+def test_a_sequenced_study_says_where_each_level_started(tmp_path: Path) -> None:
+    """Levels that started from different welds (``--sequence``) say which,
+    in the table and in the JSON."""
+    starts = {0.0: ("steadyWeld", 12.0), 1.0: ("level0", 18.75)}
+    members = []
+    for level, h in ((0.0, 0.45), (1.0, 0.225)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h, wall_time=1.0,
+                                 start_time=starts[level][1], end_time=starts[level][1] + 6.0,
+                                 steady=True, started_from=starts[level])
+        member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h)}
+        members.append(member)
+    study = accuracy.evaluate(accuracy.BeadScene(), members, None)
+    assert ("level0 from steadyWeld at 12 s; level1 from level0 at 18.75 s"
+            in accuracy.markdown(study))
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    written = json.loads((tmp_path / "accuracy.json").read_text())["levels"]
+    assert [level["started_from"] for level in written] == [
+        {"run": "steadyWeld", "time_s": 12.0}, {"run": "level0", "time_s": 18.75}]
+
+
 @pytest.mark.parametrize("cells", [(0.225, 0.318, 0.45), (0.2, 0.3, 0.36)])
 @pytest.mark.parametrize("order", [1.0, 1.5, 2.0])
 def test_three_levels_recover_order_and_error(cells: tuple[float, float, float],

@@ -827,6 +827,10 @@ def markdown(study: Study) -> str:
                f"from {m.start_time:g} s)" if m.first_steady is not None else "")
             + f", {m.core_hours_per_simulated_s:.2f} core-h per simulated s"
             for m in study.members) + "."]
+    if any(m.started_from is not None for m in study.members):
+        lines += ["", "Started from (mapped onto each level's mesh): " + "; ".join(
+            f"{m.name} from {m.started_from[0]} at {m.started_from[1]:g} s"
+            for m in study.members if m.started_from is not None) + "."]
     cheapest = cheapest_levels(study)
     finest = study.reference_member
     scales = getattr(study.scene, "error_scales", {})

@@ -142,16 +142,22 @@ def test_a_sequenced_study_says_where_each_level_started(tmp_path: Path) -> None
     for level, h in ((0.0, 0.45), (1.0, 0.225)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h, wall_time=1.0,
                                  start_time=starts[level][1], end_time=starts[level][1] + 6.0,
-                                 steady=True, started_from=starts[level])
+                                 steady=True, first_steady=starts[level][1] + 5.0,
+                                 started_from=starts[level])
         member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h)}
         members.append(member)
     study = accuracy.evaluate(accuracy.BeadScene(), members, None)
-    assert ("level0 from steadyWeld at 12 s; level1 from level0 at 18.75 s"
-            in accuracy.markdown(study))
+    assert ("level0 from steadyWeld at 12 s; level1 from level0 at 18.75 s (0.00 core-h "
+            "to quasi-steady with the levels before)" in accuracy.markdown(study))
     accuracy.write_json(study, tmp_path / "accuracy.json")
     written = json.loads((tmp_path / "accuracy.json").read_text())["levels"]
     assert [level["started_from"] for level in written] == [
         {"run": "steadyWeld", "time_s": 12.0}, {"run": "level0", "time_s": 18.75}]
+    # Level 1 needs level 0's weld first: both levels' core-hours to
+    # quasi-steady (each 5 s at its cost: 1 s of one core per 6 s simulated)
+    own = 5.0 * (1.0 / 6.0) / 3600
+    assert written[0]["route_core_hours_to_steady"] == pytest.approx(own)
+    assert written[1]["route_core_hours_to_steady"] == pytest.approx(2 * own)
 
 
 @pytest.mark.parametrize("cells", [(0.225, 0.318, 0.45), (0.2, 0.3, 0.36)])

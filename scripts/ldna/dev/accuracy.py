@@ -397,6 +397,22 @@ class Member:
         return self.core_hours_per_simulated_s * (self.first_steady - self.start_time)
 
 
+def route_core_hours_to_steady(member: Member, members: list[Member]) -> float | None:
+    """Core-hours to the member's first quasi-steady time, counting those of
+    the study's members its weld started from (``--sequence``: level 1
+    needs level 0.5's quasi-steady weld first); None if one of them was
+    never judged quasi-steady."""
+    by_name = {m.name: m for m in members}
+    total, current, seen = 0.0, member, set()
+    while current is not None and current.name not in seen:
+        seen.add(current.name)
+        if current.core_hours_to_steady is None:
+            return None
+        total += current.core_hours_to_steady
+        current = by_name.get(current.started_from[0]) if current.started_from else None
+    return total
+
+
 @dataclass(frozen=True)
 class StartState:
     """A developed state every member starts from: a reconstructed time of a run."""
@@ -732,7 +748,10 @@ def write_json(study: Study, path: Path) -> None:
             # study) and the cost window's steps
             "legs_core_hours_per_simulated_s": finite(m.legs_core_seconds_per_ms / 3.6),
             "cost_window_steps": m.window_steps if m.window_core_s_per_ms is not None else None,
-            "core_hours_to_steady": m.core_hours_to_steady, "steady": m.steady,
+            "core_hours_to_steady": m.core_hours_to_steady,
+            # With the levels it started from (--sequence)
+            "route_core_hours_to_steady": route_core_hours_to_steady(m, study.members),
+            "steady": m.steady,
             "first_steady_s": m.first_steady, "verdict": m.verdict,
             **{unit_name(n): finite(m.outputs.get(n, math.nan) * meta[n][2]) for n in meta},
             "errors": {n: finite(m.errors.get(n, math.nan)) for n in meta},
@@ -828,8 +847,17 @@ def markdown(study: Study) -> str:
             + f", {m.core_hours_per_simulated_s:.2f} core-h per simulated s"
             for m in study.members) + "."]
     if any(m.started_from is not None for m in study.members):
+        names = {m.name for m in study.members}
+
+        def route(m: Member) -> str:
+            if m.started_from is None or m.started_from[0] not in names:
+                return ""
+            hours = route_core_hours_to_steady(m, study.members)
+            return ("" if hours is None else
+                    f" ({hours:.2f} core-h to quasi-steady with the levels before)")
+
         lines += ["", "Started from (mapped onto each level's mesh): " + "; ".join(
-            f"{m.name} from {m.started_from[0]} at {m.started_from[1]:g} s"
+            f"{m.name} from {m.started_from[0]} at {m.started_from[1]:g} s{route(m)}"
             for m in study.members if m.started_from is not None) + "."]
     cheapest = cheapest_levels(study)
     finest = study.reference_member

@@ -188,7 +188,7 @@ class BeadScene(LdnaScene):
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: a
     #: level mapped from the saved weld is judged from its bead's arrival
-    #: (1.48 s) plus four windows of whole ripple periods (0.44 s at the
+    #: (1.47 s) plus four windows of whole ripple periods (0.44 s at the
     #: band's level 0: 1.76 s), and may need stretches more
     MAX_SPAN = 4.0
     #: Shortest window ``ldna steady`` judges with [s] (``--min-window``):

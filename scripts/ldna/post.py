@@ -474,11 +474,8 @@ def weld_start_time(case: Path) -> float:
     """When the case's own weld started [s]: 0, or the time at which it
     started from another weld's state, whose bead the sections hold until
     the case's own arrives (the latest such start)."""
-    name, file = WELD_START_RECORD
-    starts = [float(line) for record in (Path(case) / "postProcessing" / name).glob(f"*/{file}.dat")
-              for line in record.read_text().splitlines()
-              if line.strip() and not line.startswith("#")]
-    return max(starts, default=0.0)
+    state = weld_start_state(case)
+    return 0.0 if state is None else state[1]
 
 
 def weld_start_state(case: Path) -> tuple[str, float] | None:

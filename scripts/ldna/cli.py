@@ -105,7 +105,7 @@ def _accuracy(args: argparse.Namespace) -> int:
             return 2
         start = accuracy.StartState(Path(args.start_from), args.start_time)
     if args.sequence and start is None:
-        print("ldna accuracy: --sequence starts the first level from --start-from: give it",
+        print("ldna accuracy: error: --sequence starts the first level from --start-from: give it",
               file=sys.stderr)
         return 2
     end_time = args.end_time

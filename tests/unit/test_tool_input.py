@@ -25,6 +25,7 @@ BAD_TOOL_CALLS = [
     (["accuracy", str(TEMPLATE), "out", "--end-time", "-1"], "positive"),
     (["accuracy", str(TEMPLATE), "out", "--min-window", "nan"], "positive"),
     (["accuracy", str(TEMPLATE), "out", "--min-window", "1"], "--scene bead"),
+    (["accuracy", str(TEMPLATE), "out", "--sequence"], "--start-from"),
     (["bead-report", "/nonexistent", "out"], "not an OpenFOAM case"),
 ]
 

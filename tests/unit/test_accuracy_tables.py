@@ -137,7 +137,7 @@ def test_a_bead_study_states_its_steadiness_window(tmp_path: Path) -> None:
 def test_a_sequenced_study_says_where_each_level_started(tmp_path: Path) -> None:
     """Levels that started from different welds (``--sequence``) say which,
     in the table and in the JSON."""
-    starts = {0.0: ("steadyWeld", 12.0), 1.0: ("level0", 18.75)}
+    starts = {0.0: ("steadyWeld", 12.0), 1.0: ("level0", 18.0)}
     members = []
     for level, h in ((0.0, 0.45), (1.0, 0.225)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h, wall_time=1.0,
@@ -147,17 +147,18 @@ def test_a_sequenced_study_says_where_each_level_started(tmp_path: Path) -> None
         member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h)}
         members.append(member)
     study = accuracy.evaluate(accuracy.BeadScene(), members, None)
-    assert ("level0 from steadyWeld at 12 s; level1 from level0 at 18.75 s (0.00 core-h "
+    assert ("level0 from steadyWeld at 12 s; level1 from level0 at 18 s (0.00 core-h "
             "to quasi-steady with the levels before)" in accuracy.markdown(study))
     accuracy.write_json(study, tmp_path / "accuracy.json")
     written = json.loads((tmp_path / "accuracy.json").read_text())["levels"]
     assert [level["started_from"] for level in written] == [
-        {"run": "steadyWeld", "time_s": 12.0}, {"run": "level0", "time_s": 18.75}]
-    # Level 1 needs level 0's weld first: both levels' core-hours to
-    # quasi-steady (each 5 s at its cost: 1 s of one core per 6 s simulated)
-    own = 5.0 * (1.0 / 6.0) / 3600
-    assert written[0]["route_core_hours_to_steady"] == pytest.approx(own)
-    assert written[1]["route_core_hours_to_steady"] == pytest.approx(2 * own)
+        {"run": "steadyWeld", "time_s": 12.0}, {"run": "level0", "time_s": 18.0}]
+    # Each level costs 1 s of one core per 6 s simulated.  Level 1 needs
+    # level 0 run to 18 s (6 s from its start) and its own 5 s to
+    # quasi-steady; level 0 alone its 5 s
+    rate = (1.0 / 6.0) / 3600
+    assert written[0]["route_core_hours_to_steady"] == pytest.approx(5.0 * rate)
+    assert written[1]["route_core_hours_to_steady"] == pytest.approx((6.0 + 5.0) * rate)
 
 
 @pytest.mark.parametrize("cells", [(0.225, 0.318, 0.45), (0.2, 0.3, 0.36)])

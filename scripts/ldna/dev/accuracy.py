@@ -398,19 +398,18 @@ class Member:
 
 
 def route_core_hours_to_steady(member: Member, members: list[Member]) -> float | None:
-    """Core-hours to the member's first quasi-steady time, counting those of
-    the study's members its weld started from (``--sequence``: level 1
-    needs level 0.5's quasi-steady weld first); None if one of them was
-    never judged quasi-steady."""
+    """Core-hours to the member's first quasi-steady time, with those of the
+    study's members its weld started from, each counted from its own start
+    to the time the next one started from (``--sequence``: level 1 needs
+    level 0.5 run to the time it starts from); None if the member was never
+    judged quasi-steady."""
     by_name = {m.name: m for m in members}
-    total, current, seen = 0.0, member, set()
-    while current is not None and current.name not in seen:
-        seen.add(current.name)
-        if current.core_hours_to_steady is None:
-            return None
-        total += current.core_hours_to_steady
-        current = by_name.get(current.started_from[0]) if current.started_from else None
-    return total
+    hours, child = member.core_hours_to_steady, member
+    while hours is not None and child.started_from and child.started_from[0] in by_name:
+        parent = by_name[child.started_from[0]]
+        hours += parent.core_hours_per_simulated_s * (child.started_from[1] - parent.start_time)
+        child = parent
+    return hours
 
 
 @dataclass(frozen=True)

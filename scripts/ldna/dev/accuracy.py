@@ -436,17 +436,28 @@ class StartState:
                  f"{self.time:g}", log_name="startFromState")
 
 
+def resumed_start_time(directory: Path) -> float | None:
+    """The start time of a member that has run before (it has written a time
+    after its start, decomposed or not), which ``--resume`` continues; None
+    for a member to make anew."""
+    control = directory / "system" / "controlDict"
+    if not control.is_file() or not (
+            (directory / "processor0").is_dir() or len(Case(directory).times) > 1):
+        return None
+    return Case(directory).scalar("system/controlDict", "startTime")
+
+
 def run_member(template: Path, directory: Path, scene: Scene, member: Member,
                end_time: float | None, n_procs: int,
                start: StartState | None = None, resume: bool = False) -> Member:
     """Copy, mesh and run one member; fill in its cost and outputs.  With
     ``resume`` a member that has run before continues from its latest time."""
     control = "system/controlDict"
-    if resume and (directory / control).is_file() and (
-            (directory / "processor0").is_dir() or len(Case(directory).times) > 1):
+    began = resumed_start_time(directory) if resume else None
+    if began is not None:
         case = Case(directory)
         member.cell_size_mm = scene.set_resolution(case, member.level)
-        member.start_time = case.scalar(control, "startTime")
+        member.start_time = began
         case.set(control, "startFrom", "latestTime")
         member.end_time = end_time if end_time is not None else case.scalar(control, "endTime")
         member.cells = case.cells
@@ -1004,10 +1015,9 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
                 if end_time is not None:
                     # As long from its own start (a resumed member's may
                     # be another: it ran before)
-                    began = (Case(directory).scalar("system/controlDict", "startTime")
-                             if resume and (directory / "system" / "controlDict").is_file()
-                             else level_start.time)
-                    level_end = began + (end_time - start.time)
+                    began = resumed_start_time(directory) if resume else None
+                    level_end = (level_start.time if began is None else began) + (
+                        end_time - start.time)
                 if previous.steady is False:
                     print(f"  {previous.name} was not judged quasi-steady: {member.name} "
                           f"starts from its latest time all the same", flush=True)

@@ -142,7 +142,9 @@ def test_band_level_from_the_saved_weld(tmp_path: Path) -> None:
 def test_sequenced_levels_start_from_the_level_before(tmp_path: Path) -> None:
     """``--sequence``: the first level starts from the saved weld, the next
     from the first's latest time, mapped onto its own mesh (band by the
-    first level's weld), and runs as long from there.  The second level
+    first level's weld), and runs as long from there.  On two ranks, as the
+    study runs: the first level's end is reconstructed from the ranks'
+    folders before the second maps it.  The second level
     starts with the metal volume the first ended with (the volume-weighted
     mapping keeps the metal fraction), records where its
     weld started (its bead is judged from its own arrival), and the study
@@ -159,9 +161,11 @@ def test_sequenced_levels_start_from_the_level_before(tmp_path: Path) -> None:
     scene.band = True
     study, _ = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study", scene,
                                   levels=[0, 0.5], end_time=start_time + BAND_RUN_TIME,
+                                  n_procs=2,
                                   start=accuracy.StartState(steady_weld, start_time),
                                   sequence=True)
     first, second = study.members
+    assert (first.n_procs, second.n_procs) == (2, 2)
     assert first.start_time == pytest.approx(start_time)
     assert second.start_time == pytest.approx(first.end_time)
     assert second.end_time - second.start_time == pytest.approx(BAND_RUN_TIME)

@@ -68,7 +68,7 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
                for name in bond)
     text = accuracy.markdown(study)
-    assert "0 at every level, so not judged" in text and "penetration" in text
+    assert "lack of fusion at every level" in text and "penetration" in text
     path = tmp_path / "accuracy.json"
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
@@ -79,6 +79,43 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     study = accuracy.evaluate(scene, members, None)
     assert "penetration" not in study.not_acting
     assert members[0].errors["penetration"] == pytest.approx(0.2 / 4)
+
+
+def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -> None:
+    """The fusion metrics recover a fusion zone's depth within 0.05 mm
+    (tests/solver/test_fusion_line.py).  Levels whose penetrations are a
+    few hundredths of a millimetre (0.016 and 0.007 mm, as the bead study's
+    levels 0 and 0.5 read) have no bond to converge: the fusion outputs get
+    no error and no cheapest level, the table says lack of fusion, the
+    bead's own metrics are judged as before.  One level at 0.08 mm fuses:
+    every fusion output is judged again."""
+    scene = accuracy.BeadScene()
+    members = []
+    for level, h, width, depth in ((0.0, 0.45, 11e-3, 0.016e-3), (0.5, 0.318, 10e-3, 0.007e-3)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": width, "bead_height": 4e-3, "penetration": depth,
+                          "bonded_width": 0.02e-3, "dilution": 1e-4,
+                          "chemical_dilution": 6e-4}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    fusion = {"penetration", "bonded_width", "dilution", "chemical_dilution"}
+    assert study.fusion_unresolved and set(study.not_acting) == fusion
+    assert all(math.isnan(members[0].errors[name]) for name in fusion)
+    assert members[0].errors["bead_width"] == pytest.approx(0.1)
+    assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
+               for name in fusion)
+    text = accuracy.markdown(study)
+    assert "lack of fusion at every level" in text and "0.05 mm" in text
+    assert "0 at every level" not in text
+    path = tmp_path / "accuracy.json"
+    accuracy.write_json(study, path)
+    data = json.loads(path.read_text())
+    assert data["fusion_unresolved"] is True and set(data["not_acting"]) == fusion
+
+    members[0].outputs["penetration"] = 0.08e-3
+    study = accuracy.evaluate(scene, members, None)
+    assert not study.fusion_unresolved and study.not_acting == ()
+    assert members[0].errors["penetration"] == pytest.approx((0.08 - 0.007) / 4)
 
 
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:

@@ -184,6 +184,14 @@ class BeadScene(LdnaScene):
                     # 0 where the clad wets its substrate: read against the
                     # height, as the penetration is
                     "first_layer_gas": "bead_height"}
+    #: The outputs that only fusion makes (base metal in the bead section
+    #: without fusion is numerical mixing at the surface, not dilution)
+    fusion_outputs = ("bonded_width", "penetration", "dilution", "chemical_dilution")
+    #: Penetration [m] below which the fusion metrics do not resolve a bond:
+    #: their tested depth accuracy (tests/solver/test_fusion_line.py,
+    #: docs/validation.md).  A study whose every level stays below it has no
+    #: fusion to converge.
+    fusion_depth_floor = 0.05e-3
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: a
@@ -568,8 +576,11 @@ class Study:
     reference_member: "Member | None" = None
     #: Outputs that are 0 at every level and in the reference (the bond
     #: without fusion): nothing to converge, so no error, order or cheapest
-    #: level is read for them
+    #: level is read for them; with ``fusion_unresolved`` also the fusion
+    #: outputs of a study none of whose levels fuses by more than the
+    #: metrics resolve
     not_acting: tuple[str, ...] = ()
+    fusion_unresolved: bool = False
     #: The three finest levels read without a reference (None with fewer)
     three_level: "dict[str, ThreeLevel] | None" = None
     #: Simulated time of the serial cost windows [s] and the processor they
@@ -675,10 +686,21 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
     def size(name: str) -> float:
         return error_scale(scales, reference, name)
 
-    not_acting = tuple(
-        name for name in scene.outputs_meta
-        if exact is None and reference.get(name) == 0
-        and all(m.outputs.get(name) == 0 for m in members))
+    fusion_outputs = getattr(scene, "fusion_outputs", ())
+    floor = getattr(scene, "fusion_depth_floor", math.nan)
+    # NaN (no penetration read) is not below the floor
+    fusion_unresolved = exact is None and bool(fusion_outputs) and all(
+        abs(outputs.get("penetration", math.nan)) < floor
+        for outputs in [reference, *(m.outputs for m in members)])
+
+    def not_judged(name: str) -> bool:
+        if exact is not None or name not in reference:
+            return False
+        if fusion_unresolved and name in fusion_outputs:
+            return True
+        return reference[name] == 0 and all(m.outputs.get(name) == 0 for m in members)
+
+    not_acting = tuple(name for name in scene.outputs_meta if not_judged(name))
     for member in members:
         member.errors = {
             name: abs(value - reference[name]) / size(name)
@@ -708,7 +730,8 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
                 tuple(m.cell_size_mm for m in finest3), tuple(values),
                 error_scale(scales, finest3[0].outputs, name))
     return Study(scene, members, reference, reference_name, orders,
-                 None if exact is not None else finest, not_acting, three)
+                 None if exact is not None else finest, not_acting, fusion_unresolved,
+                 three)
 
 
 #: Error bounds a user picks a level for: the cheapest level within each
@@ -778,6 +801,11 @@ def write_json(study: Study, path: Path) -> None:
         "orders": {n: finite(study.orders.get(n, math.nan)) for n in meta},
         "cheapest_level": cheapest_levels(study),
         "not_acting": list(study.not_acting),
+        # No level fuses by more than the fusion metrics resolve (penetration
+        # below fusion_depth_floor_mm at every level)
+        "fusion_unresolved": study.fusion_unresolved,
+        "fusion_depth_floor_mm": (1e3 * study.scene.fusion_depth_floor
+                                  if hasattr(study.scene, "fusion_depth_floor") else None),
         # The steadiness judge's shortest window of a bead study [s]
         "min_window_s": getattr(study.scene, "min_window", None),
         # Where core_hours_per_simulated_s comes from: a serial window of
@@ -890,9 +918,19 @@ def markdown(study: Study) -> str:
                   f"{GCI_MAX_ORDER:g} counted as {GCI_MAX_ORDER:g}): " + "; ".join(
                       f"{meta[n][0]} {_three_level_text(t, meta[n])}"
                       for n, t in study.three_level.items()) + "."]
-    if study.not_acting:
+    if study.fusion_unresolved:
+        floor = 1e3 * study.scene.fusion_depth_floor
+        lines += ["", f"No level fuses its substrate by more than the fusion metrics resolve "
+                  f"(penetration below {floor:g} mm, their tested depth accuracy, at every "
+                  "level): lack of fusion at every level, so the fusion outputs are not "
+                  "judged (no error, order or cheapest level; their values are in the "
+                  "table): " + ", ".join(meta[n][0] for n in study.not_acting
+                                        if n in study.scene.fusion_outputs) + "."]
+    zero = [n for n in study.not_acting
+            if not (study.fusion_unresolved and n in study.scene.fusion_outputs)]
+    if zero:
         lines += ["", "0 at every level, so not judged (no error, order or cheapest "
-                  "level): " + ", ".join(meta[n][0] for n in study.not_acting) + "."]
+                  "level): " + ", ".join(meta[n][0] for n in zero) + "."]
     if study.cost_window is not None:
         lines += ["", f"Cost (core-s/ms, core-h per simulated s): a serial window of "
                   f"{study.cost_window:g} s from each level's latest time, all on "

@@ -14,6 +14,7 @@ import shutil
 import subprocess
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
@@ -38,23 +39,38 @@ class RunResult:
 
 
 def run(case: Path, command: str, log_name: str | None = None, check: bool = True,
-        timeout: float | None = None) -> RunResult:
+        timeout: float | None = None, progress: Callable[[], None] | None = None,
+        every: float = 300.0) -> RunResult:
     """Run a shell ``command`` inside ``case`` with the ldnaFoam environment.
 
     The output goes to ``case/log.<log_name>`` (default: the first word of the
     command).  With ``check`` a non-zero exit raises ``RuntimeError`` quoting
-    the end of the log.
+    the end of the log.  ``progress`` is called every ``every`` seconds of
+    wall time while the command runs (not with ``timeout``).
     """
+    if progress is not None and timeout is not None:
+        raise ValueError("run: give progress or timeout, not both")
     case = Path(case)
     log = case / f"log.{log_name or command.split()[0]}"
     script = f'. "{ENV_SCRIPT}" && cd "{case}" && {command}'
     with log.open("w") as out:
-        proc = subprocess.run(["bash", "-c", script], stdout=out, stderr=subprocess.STDOUT,
-                              timeout=timeout, check=False)
-    result = RunResult(proc.returncode, log)
-    if check and proc.returncode != 0:
+        if progress is None:
+            returncode = subprocess.run(["bash", "-c", script], stdout=out,
+                                        stderr=subprocess.STDOUT, timeout=timeout,
+                                        check=False).returncode
+        else:
+            proc = subprocess.Popen(["bash", "-c", script], stdout=out,
+                                    stderr=subprocess.STDOUT)
+            while True:
+                try:
+                    returncode = proc.wait(timeout=every)
+                    break
+                except subprocess.TimeoutExpired:
+                    progress()
+    result = RunResult(returncode, log)
+    if check and returncode != 0:
         tail = "\n".join(result.output.splitlines()[-30:])
-        raise RuntimeError(f"'{command}' failed in {case} (exit {proc.returncode}):\n{tail}")
+        raise RuntimeError(f"'{command}' failed in {case} (exit {returncode}):\n{tail}")
     return result
 
 
@@ -69,10 +85,12 @@ def start(case: Path, command: str, log_name: str, append: bool = False) -> subp
 
 
 def run_parallel(case: Path, command: str, n_procs: int, log_name: str | None = None,
-                 check: bool = True) -> RunResult:
+                 check: bool = True, progress: Callable[[], None] | None = None,
+                 every: float = 300.0) -> RunResult:
     """Run ``command -parallel`` on ``n_procs`` MPI ranks (bin/ldna-env sets mpirun up)."""
     return run(case, f"mpirun -np {n_procs} {command} -parallel",
-               log_name=log_name or command.split()[0], check=check)
+               log_name=log_name or command.split()[0], check=check, progress=progress,
+               every=every)
 
 
 def copy_case(source: Path, destination: Path) -> Path:

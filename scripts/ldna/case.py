@@ -14,6 +14,7 @@ from __future__ import annotations
 import subprocess
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
@@ -112,14 +113,16 @@ class Case:
         self.run("decomposePar -force", log_name="decomposePar")
 
     def run(self, command: str = "ldnaFoam", n_procs: int = 1, log_name: str | None = None,
-            check: bool = True, timeout: float | None = None) -> RunResult:
+            check: bool = True, timeout: float | None = None,
+            progress: Callable[[], None] | None = None, every: float = 300.0) -> RunResult:
         """Run ``command`` in the case, on ``n_procs`` MPI ranks if more than one
-        (the case must be decomposed); output in ``log.<log_name>``."""
+        (the case must be decomposed); output in ``log.<log_name>``.
+        ``progress`` is called every ``every`` seconds while it runs."""
         if n_procs > 1:
             return foamcase.run_parallel(self.path, command, n_procs, log_name=log_name,
-                                         check=check)
+                                         check=check, progress=progress, every=every)
         return foamcase.run(self.path, command, log_name=log_name, check=check,
-                            timeout=timeout)
+                            timeout=timeout, progress=progress, every=every)
 
     def start(self, command: str, log_name: str, append: bool = False) -> subprocess.Popen:
         """Start ``command`` in the case and return at once (a member of a

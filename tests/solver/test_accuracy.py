@@ -60,7 +60,8 @@ def test_stefan_front_converges_with_the_mesh(tmp_path: Path) -> None:
     assert paths[2].stat().st_size > 0
 
 
-def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
+def test_bead_study_of_two_coarse_levels(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                        capsys: pytest.CaptureFixture[str]) -> None:
     """The bead study's small version (``--scene bead``), levels 0 and 0.5 of
     the template for 10 ms from the flat substrate: each level runs, is judged
     (not steady: the deposit reaches the template's section, 11 mm behind the
@@ -68,10 +69,16 @@ def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
     accuracy.json; each conserves the metal the wires fed.  The cost comes
     from a serial window of 2 ms from each level's end (``--cost-window``),
     which leaves the members as they were: level 0.5 (2.9 times the cells,
-    a shorter capillary time step) costs more per simulated second."""
+    a shorter capillary time step) costs more per simulated second.  While
+    a level runs, the study prints progress lines (here every 2 s of wall
+    time): the simulated time within the run, and steps no more than the
+    level then took in all."""
+    import re
+
     from ldna.balance import metal_mass_balance
     from ldna.case import Case
 
+    monkeypatch.setattr(accuracy, "PROGRESS_INTERVAL", 2.0)
     window = 0.002
     study, paths = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study",
                                       accuracy.SCENES["bead"], levels=[0, 0.5],
@@ -100,6 +107,13 @@ def test_bead_study_of_two_coarse_levels(tmp_path: Path) -> None:
         assert float(latest.name) <= 0.01 + 1e-9
     costs = [level["core_hours_per_simulated_s"] for level in written["levels"]]
     assert costs[1] > costs[0]
+    printed = capsys.readouterr().out
+    for member in study.members:
+        lines = re.findall(rf"^  {re.escape(member.name)}: t = (\S+) of 0.01 s, (\d+) steps",
+                           printed, re.MULTILINE)
+        assert lines, printed
+        for simulated, steps in lines:
+            assert 0 < float(simulated) <= 0.01 and 0 < int(steps) <= member.steps
 
 
 def test_band_level_from_the_saved_weld(tmp_path: Path) -> None:

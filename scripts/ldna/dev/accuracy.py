@@ -156,6 +156,37 @@ def largest_fraction_in_flight(case: Path) -> float:
     return float(alpha.max()) if alpha.size else math.nan
 
 
+#: Wall time between a running level's progress lines [s]: a level of the
+#: bead study runs for hours
+PROGRESS_INTERVAL = 300.0
+
+
+class RunProgress:
+    """A progress line of a run from ``start_time`` to ``end_time``: the
+    simulated time and steps from the solver's balances table (one row a
+    step), the wall time, and the time left at the rate since it began."""
+
+    def __init__(self, case: Case, label: str, start_time: float, end_time: float) -> None:
+        self.case, self.label = case, label
+        self.start_time, self.end_time = start_time, end_time
+        self.began = time.monotonic()
+
+    def __call__(self) -> None:
+        wall = time.monotonic() - self.began
+        try:
+            times = np.asarray(self.case.latest_table(*BALANCES)["Time"], dtype=float)
+        except FileNotFoundError:
+            times = np.empty(0)
+        times = times[times > self.start_time]
+        if not times.size:
+            print(f"  {self.label}: {wall / 60:.1f} min wall, setting up", flush=True)
+            return
+        simulated = times[-1] - self.start_time
+        left = (self.end_time - times[-1]) * wall / simulated
+        print(f"  {self.label}: t = {times[-1]:.5g} of {self.end_time:g} s, {times.size} steps, "
+              f"{wall / 60:.1f} min wall, about {left / 60:.0f} min left", flush=True)
+
+
 class BeadScene(LdnaScene):
     """The LDNA template's quasi-steady bead: each level runs until ``ldna
     steady`` judges its bead quasi-steady (domain balance included), in
@@ -228,7 +259,10 @@ class BeadScene(LdnaScene):
         target = min(self.STRETCH * math.ceil(target / self.STRETCH - 1e-9), stop)
         while True:
             case.set(control, "endTime", f"{target:g}")
-            case.run("ldnaFoam", member.n_procs, log_name=f"ldnaFoam.{target:g}")
+            latest = max(written, default=start)
+            case.run("ldnaFoam", member.n_procs, log_name=f"ldnaFoam.{target:g}",
+                     progress=RunProgress(case, member.name, latest, target),
+                     every=PROGRESS_INTERVAL)
             # Read the fields the stretch wrote while they are there (a
             # packed study keeps only its first and latest)
             section_fields.update(case.path)
@@ -237,8 +271,12 @@ class BeadScene(LdnaScene):
             verdict = steady.case_steadiness(case.path, min_window=self.min_window)
             member.steady = verdict.steady
             member.verdict = verdict.reason
+            written.append(target)
             if verdict.steady or target >= stop - 1e-9:
                 break
+            print(f"  {member.name} at {target:g} s: not quasi-steady ({verdict.reason}); "
+                  f"on to {min(target + self.STRETCH, stop):g} s (at most {stop:g} s)",
+                  flush=True)
             target = min(target + self.STRETCH, stop)
         member.end_time = target
         times, table, arrival = steady.case_table(case.path)

@@ -59,14 +59,19 @@ def run(case: Path, command: str, log_name: str | None = None, check: bool = Tru
                                         stderr=subprocess.STDOUT, timeout=timeout,
                                         check=False).returncode
         else:
-            proc = subprocess.Popen(["bash", "-c", script], stdout=out,
-                                    stderr=subprocess.STDOUT)
-            while True:
+            # As subprocess.run: the command does not outlive an interrupted call
+            with subprocess.Popen(["bash", "-c", script], stdout=out,
+                                  stderr=subprocess.STDOUT) as proc:
                 try:
-                    returncode = proc.wait(timeout=every)
-                    break
-                except subprocess.TimeoutExpired:
-                    progress()
+                    while True:
+                        try:
+                            returncode = proc.wait(timeout=every)
+                            break
+                        except subprocess.TimeoutExpired:
+                            progress()
+                except BaseException:
+                    proc.kill()
+                    raise
     result = RunResult(returncode, log)
     if check and returncode != 0:
         tail = "\n".join(result.output.splitlines()[-30:])

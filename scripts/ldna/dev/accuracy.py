@@ -174,8 +174,11 @@ class RunProgress:
     def __call__(self) -> None:
         wall = time.monotonic() - self.began
         try:
-            times = np.asarray(self.case.latest_table(*BALANCES)["Time"], dtype=float)
-        except FileNotFoundError:
+            table = self.case.latest_table(*BALANCES)
+            times = np.empty(0) if table is None else np.asarray(table["Time"], dtype=float)
+        except (OSError, ValueError):
+            # Not there yet, or a number the solver is still writing: a
+            # progress line must never stop the run
             times = np.empty(0)
         times = times[times > self.start_time]
         if not times.size:

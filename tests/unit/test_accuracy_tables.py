@@ -50,6 +50,22 @@ def test_bond_errors_read_against_the_bead() -> None:
     assert coarse.errors["bead_width"] == pytest.approx(0.1)
 
 
+def assert_not_judged(study: accuracy.Study, members: list[accuracy.Member],
+                      names: set[str]) -> str:
+    """The fusion outputs ``names`` of a study without fusion (a coarse
+    level's bead 11 mm wide, the reference's 10 mm): no error, no cheapest level, the
+    table says lack of fusion, the bead's width is judged (10 %); returns
+    the table's text."""
+    assert study.fusion_unresolved and set(study.not_acting) == names
+    assert all(math.isnan(members[0].errors[name]) for name in names)
+    assert members[0].errors["bead_width"] == pytest.approx(0.1)
+    assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
+               for name in names)
+    text = accuracy.markdown(study)
+    assert "lack of fusion at every level" in text
+    return text
+
+
 def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     """No level fuses the substrate: the bond's outputs are 0 everywhere, so
     they have no error (not 0 %), no order and no cheapest level, and the
@@ -62,13 +78,8 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
         member.outputs = {"bead_width": width, "bead_height": 4e-3, **bond}
         members.append(member)
     study = accuracy.evaluate(scene, members, None)
-    assert set(study.not_acting) == set(bond)
-    assert all(math.isnan(members[0].errors[name]) for name in bond)
-    assert members[0].errors["bead_width"] == pytest.approx(0.1)
-    assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
-               for name in bond)
-    text = accuracy.markdown(study)
-    assert "lack of fusion at every level" in text and "penetration" in text
+    text = assert_not_judged(study, members, set(bond))
+    assert "penetration" in text
     path = tmp_path / "accuracy.json"
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
@@ -99,13 +110,8 @@ def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -
         members.append(member)
     study = accuracy.evaluate(scene, members, None)
     fusion = {"penetration", "bonded_width", "dilution", "chemical_dilution"}
-    assert study.fusion_unresolved and set(study.not_acting) == fusion
-    assert all(math.isnan(members[0].errors[name]) for name in fusion)
-    assert members[0].errors["bead_width"] == pytest.approx(0.1)
-    assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
-               for name in fusion)
-    text = accuracy.markdown(study)
-    assert "lack of fusion at every level" in text and "0.05 mm" in text
+    text = assert_not_judged(study, members, fusion)
+    assert "0.05 mm" in text
     assert "0 at every level" not in text
     path = tmp_path / "accuracy.json"
     accuracy.write_json(study, path)

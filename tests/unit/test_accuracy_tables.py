@@ -124,6 +124,31 @@ def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -
     assert members[0].errors["penetration"] == pytest.approx((0.08 - 0.007) / 4)
 
 
+def test_a_bead_output_zero_at_every_level_beside_lack_of_fusion() -> None:
+    """No gas film under the first layer at any level (0 everywhere) and no
+    level fusing: the table names the gas film as 0 at every level and only
+    the fusion outputs as lack of fusion; neither gets an error or a
+    cheapest level, the bead's width still does."""
+    scene = accuracy.BeadScene()
+    members = []
+    for level, h, width in ((0.0, 0.45, 11e-3), (1.0, 0.225, 10e-3)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": width, "bead_height": 4e-3, "first_layer_gas": 0.0,
+                          "penetration": 0.01e-3, "bonded_width": 0.0, "dilution": 0.0,
+                          "chemical_dilution": 0.0}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    fusion = {"penetration", "bonded_width", "dilution", "chemical_dilution"}
+    text = assert_not_judged(study, members, fusion | {"first_layer_gas"})
+    assert math.isnan(members[0].errors["first_layer_gas"])
+    zero_line = next(line for line in text.splitlines() if line.startswith("0 at every level"))
+    fusion_line = next(line for line in text.splitlines() if "lack of fusion" in line)
+    gas = scene.outputs_meta["first_layer_gas"][0]
+    assert gas in zero_line and gas not in fusion_line
+    assert all(scene.outputs_meta[n][0] in fusion_line and scene.outputs_meta[n][0]
+               not in zero_line for n in fusion)
+
+
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
     12 % and 4 % on the width, 3 % and 1 % on the height.  The cheapest level

@@ -19,6 +19,9 @@ PROJECT_DIR = Path(__file__).resolve().parents[1]
 
 TEST_CASES = Path(__file__).resolve().parent / "cases"
 TEMPLATE = PROJECT_DIR / "cases" / "ldna"
+#: The template's saved quasi-steady weld (12 s of welding), which runs and
+#: band meshes start from
+STEADY_WELD = PROJECT_DIR / "cases" / "steadyWeld"
 
 
 def prepare_test_case(name: str, destination: Path, material_from_template: bool) -> Case:

@@ -15,6 +15,7 @@ import pytest
 from ldna.dev import accuracy
 from ldna.case import PROJECT_DIR
 from ldna.foamdict import read_scalars
+from solver_cases import STEADY_WELD
 
 #: Lowest acceptable observed order of the front (the scheme is first order
 #: in time and second in space; measured 2.25 on levels 0-2)
@@ -131,14 +132,13 @@ def test_band_level_from_the_saved_weld(tmp_path: Path) -> None:
     from ldna.balance import metal_mass_balance
     from ldna.case import Case
 
-    steady_weld = PROJECT_DIR / "cases" / "steadyWeld"
-    start_time = max(float(t.name) for t in Case(steady_weld).times)
-    template_level0_cells = Case(steady_weld).cells
+    start_time = max(float(t.name) for t in Case(STEADY_WELD).times)
+    template_level0_cells = Case(STEADY_WELD).cells
     scene = copy.copy(accuracy.SCENES["ldna"])
     scene.band = True
     study, _ = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study", scene,
                                   levels=[0, 1], end_time=start_time + BAND_RUN_TIME,
-                                  start=accuracy.StartState(steady_weld, start_time))
+                                  start=accuracy.StartState(STEADY_WELD, start_time))
     written = json.loads((tmp_path / "study" / "accuracy.json").read_text())
     coarse, banded = written["levels"]
     print(f"cells: template level 0 {template_level0_cells}, band level 0 {coarse['cells']}, "
@@ -169,14 +169,13 @@ def test_sequenced_levels_start_from_the_level_before(tmp_path: Path) -> None:
     from ldna.case import Case
     from ldna.post import weld_start_state
 
-    steady_weld = PROJECT_DIR / "cases" / "steadyWeld"
-    start_time = max(float(t.name) for t in Case(steady_weld).times)
+    start_time = max(float(t.name) for t in Case(STEADY_WELD).times)
     scene = copy.copy(accuracy.SCENES["ldna"])
     scene.band = True
     study, _ = accuracy.run_study(PROJECT_DIR / "cases" / "ldna", tmp_path / "study", scene,
                                   levels=[0, 0.5], end_time=start_time + BAND_RUN_TIME,
                                   n_procs=2,
-                                  start=accuracy.StartState(steady_weld, start_time),
+                                  start=accuracy.StartState(STEADY_WELD, start_time),
                                   sequence=True)
     first, second = study.members
     assert (first.n_procs, second.n_procs) == (2, 2)

@@ -25,7 +25,7 @@ from ldna import meshing
 from ldna.case import Case
 from ldna.case import RUN_FUNCTIONS
 from ldna.foamdict import read_scalars
-from solver_cases import PROJECT_DIR, TEMPLATE
+from solver_cases import STEADY_WELD, TEMPLATE
 
 #: Relative cell-volume difference of the gmsh and block meshes: both place
 #: the same uniform points, written with the case's 8 significant digits
@@ -34,8 +34,6 @@ GMSH_VOLUME_TOLERANCE = 1e-7
 SKIN_LEVEL = 2
 #: Cubic cells: edge lengths of the refined cells equal within this
 CUBE_TOLERANCE = 0.02
-#: The template's saved quasi-steady weld, which the band test starts from
-STEADY_WELD = PROJECT_DIR / "cases" / "steadyWeld"
 #: Cells between metal and gas in the band test: a margin inside the band's
 #: own 0.02-0.98 (system/topoSetDict.band), so that the check does not
 #: repeat its choice

@@ -48,7 +48,7 @@ from ldna.case import Case
 from ldna.foamdict import keep_blocks
 from ldna.post import BeadMetrics, read_function_object_metrics
 from ldna.steady import window_mean
-from solver_cases import TEMPLATE, tighten_solvers
+from solver_cases import STEADY_WELD, TEMPLATE, tighten_solvers
 
 
 #: Times of the comparisons [s]: droplets inserted at 9.75 ms, in flight
@@ -298,9 +298,8 @@ def test_template_tolerances_on_three_ranks(tmp_path_factory: pytest.TempPathFac
     assert at_end < DROPLET_FIELD_TOLERANCE
 
 
-#: The saved quasi-steady weld and the span continued from it [s]: three
-#: droplets of each wire land in it (100 Hz)
-STEADY_WELD = TEMPLATE.parent / "steadyWeld"
+#: The span continued from the saved quasi-steady weld [s]: three droplets
+#: of each wire land in it (100 Hz)
 WELD_SPAN = 0.03
 #: The section's bead and the pool after impacts agree within 1 % (the
 #: issue's bound; measured as means over the last 20 ms on 3 ranks: bead

@@ -23,12 +23,12 @@ import pytest
 
 from ldna.case import Case
 from ldna.case import PROJECT_DIR
+from solver_cases import STEADY_WELD
 from userpath import SHELLS, run_as_user, user_command
 
 pytestmark = pytest.mark.user_path
 
-#: The saved steady weld the main command continues, and its time [s]
-STEADY_WELD = PROJECT_DIR / "cases" / "steadyWeld"
+#: The time of the saved steady weld the main command continues [s]
 STATE_TIME = float(next(p.name for p in STEADY_WELD.iterdir() if p.name[0].isdigit()))
 #: Simulated time of the short scenes [s]: not a multiple of the template's
 #: write interval, so the last time must be written by the end-of-run rule

@@ -130,21 +130,29 @@ def measure(case: Case, n_procs: int = 1) -> BeadMetrics:
     return function_object_metrics(case, 0.0)
 
 
-@pytest.mark.parametrize("depth", DEPTHS)
-@pytest.mark.parametrize("offset", OFFSETS)
-def test_fusion_zone_below_the_cell_size(level0_mesh: Case, depth: float,
-                                         offset: tuple[float, float]) -> None:
-    case = level0_mesh
+def measured_zone(case: Case, depth: float,
+                  offset: tuple[float, float]) -> tuple[BeadMetrics, float]:
+    """The metrics of the prescribed zone ``depth`` deep, its centre
+    ``offset`` from the seam, and the zone's exact area; prints both."""
     seam = 1e-3 * case.scalar("system/caseParameters", "processPosition")
     prescribed_section(case, depth, (seam + offset[0], offset[1]))
     result = measure(case)
-
     area = math.pi * ZONE_HALF_WIDTH * depth / 2
     print(f"depth {1e3 * depth:.3f} mm, offset {offset}: penetration "
           f"{1e3 * result.penetration:.4f} mm, fused area {1e6 * result.fused_area:.4f} mm2 "
           f"(exact {1e6 * area:.4f}), bonded width {1e3 * result.bonded_width:.3f} mm "
           f"(exact {2e3 * ZONE_HALF_WIDTH:.3f}), unbonded {1e3 * result.unbonded_width:.3f} mm, "
           f"dilution {result.dilution:.4f}")
+    return result, area
+
+
+@pytest.mark.parametrize("depth", DEPTHS)
+@pytest.mark.parametrize("offset", OFFSETS)
+def test_fusion_zone_below_the_cell_size(level0_mesh: Case, depth: float,
+                                         offset: tuple[float, float]) -> None:
+    case = level0_mesh
+    seam = 1e-3 * case.scalar("system/caseParameters", "processPosition")
+    result, area = measured_zone(case, depth, offset)
     assert abs(result.penetration - depth) <= DEPTH_TOLERANCE
     assert abs(result.fused_area - area) <= AREA_TOLERANCE * area
     width_tolerance = 2 * edge_tolerance(column_spacing(case))
@@ -178,15 +186,7 @@ def test_fusion_depth_on_the_band(band_mesh: Case, depth: float,
     the fusion line crosses into the background cells below them (0.6 mm)
     or meets the surface beside cells of the other size, the area and the
     bonded width are less exact (docs/limitations.md gives the figures)."""
-    case = band_mesh
-    seam = 1e-3 * case.scalar("system/caseParameters", "processPosition")
-    prescribed_section(case, depth, (seam + offset[0], offset[1]))
-    result = measure(case)
-    area = math.pi * ZONE_HALF_WIDTH * depth / 2
-    print(f"band: depth {1e3 * depth:.3f} mm, offset {offset}: penetration "
-          f"{1e3 * result.penetration:.4f} mm, fused area {1e6 * result.fused_area:.4f} mm2 "
-          f"(exact {1e6 * area:.4f}), bonded width {1e3 * result.bonded_width:.3f} mm "
-          f"(exact {2e3 * ZONE_HALF_WIDTH:.3f})")
+    result, area = measured_zone(band_mesh, depth, offset)
     assert abs(result.penetration - depth) <= DEPTH_TOLERANCE
     if depth < BAND_SPLIT_DEPTH:
         assert abs(result.fused_area - area) <= AREA_TOLERANCE * area

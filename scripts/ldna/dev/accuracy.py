@@ -1001,19 +1001,21 @@ def plot(study: Study, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     meta = study.scene.outputs_meta
-    figure, axes = plt.subplots(figsize=(7, 5))
+    figure, axes = plt.subplots(figsize=(7.5, 7))
     # More outputs than the default cycle's ten colours
     colours = plt.get_cmap("tab20")
+    finest = study.reference_member
+    plotted: set[int] = set()
     for index, name in enumerate(meta):
-        points = sorted((m.core_hours_per_simulated_s, m.errors.get(name, math.nan), m)
+        points = sorted((m.core_hours_per_simulated_s, m.errors.get(name, math.nan), id(m), m)
                         for m in study.members if m.errors.get(name, 0) > 0)
         if not points:
             continue
-        cost, error, members = zip(*points)
+        cost, error, _, members = zip(*points)
+        plotted.update(id(m) for m in members)
         order = study.orders.get(name, math.nan)
         three = (study.three_level or {}).get(name)
         # The ripples of the level and the reference, as the error is read
-        finest = study.reference_member
         size = error_scale(getattr(study.scene, "error_scales", {}), study.reference, name)
         spread = [math.hypot(m.ripples.get(name, 0.0),
                              0.0 if finest is None else finest.ripples.get(name, 0.0))
@@ -1022,18 +1024,31 @@ def plot(study: Study, path: Path) -> None:
                  + ("" if three is None else
                     f", 3 finest: GCI {100 * three.gci:.2g} %" if three.status == "converging"
                     else f", 3 finest: {three.status}"))
-        # A log axis has no zero: the lower bar stops just above it
-        lower = [min(d, 0.999 * e) for d, e in zip(spread, error)]
-        axes.errorbar(cost, error, yerr=[lower, spread], fmt="o-", capsize=3, label=label,
-                      color=colours(index % colours.N))
-        for c, e, m in zip(cost, error, members):
-            axes.annotate(f"{m.cell_size_mm:.2g} mm", (c, e), textcoords="offset points",
-                          xytext=(4, 4), fontsize=7)
+        colour = colours(index % colours.N)
+        # An error within the ripples is not resolved: a hollow marker with
+        # its upper bar only (a log axis has no zero to draw the lower to)
+        resolved = [e > d for e, d in zip(error, spread)]
+        lower = [d if r else 0.0 for d, r in zip(spread, resolved)]
+        axes.errorbar(cost, error, yerr=[lower, spread], fmt="-", capsize=3, label=label,
+                      color=colour)
+        for filled in (True, False):
+            chosen = [(c, e) for c, e, r in zip(cost, error, resolved) if r == filled]
+            if chosen:
+                axes.plot(*zip(*chosen), "o", color=colour,
+                          markerfacecolor=colour if filled else "white")
+    # Each level once, at its cost: its name and cell size
+    for m in study.members:
+        if id(m) in plotted:
+            axes.axvline(m.core_hours_per_simulated_s, color="lightgrey", lw=0.8, zorder=0)
+            axes.annotate(f"{m.name}, {m.cell_size_mm:.2g} mm",
+                          (m.core_hours_per_simulated_s, 0.02), xycoords=("data", "axes fraction"),
+                          rotation=90, va="bottom", ha="right", fontsize=7, color="dimgrey")
     # Where the reference run stands when it is one of the members
     reference = study.reference_member
     if reference is not None and math.isfinite(reference.core_hours_per_simulated_s):
         axes.axvline(reference.core_hours_per_simulated_s, color="grey", ls=":")
-        axes.annotate(f"reference: {reference.name}", (reference.core_hours_per_simulated_s, 0.02),
+        axes.annotate(f"reference: {reference.name}, {reference.cell_size_mm:.2g} mm",
+                      (reference.core_hours_per_simulated_s, 0.02),
                       xycoords=("data", "axes fraction"), rotation=90, fontsize=7,
                       xytext=(-10, 0), textcoords="offset points", color="grey")
     axes.set_xscale("log")
@@ -1043,7 +1058,9 @@ def plot(study: Study, path: Path) -> None:
     axes.set_title(f"{study.scene.name} scene: accuracy against cost")
     axes.grid(True, which="both", alpha=0.3)
     if axes.get_legend_handles_labels()[0]:
-        axes.legend(fontsize=8)
+        axes.plot([], [], "o", color="grey", markerfacecolor="white",
+                  label="hollow: error within the two levels' ripples (not resolved)")
+        axes.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=1)
     else:
         axes.text(0.5, 0.5, "no errors to plot yet", transform=axes.transAxes, ha="center")
     figure.tight_layout()

@@ -283,6 +283,27 @@ def bead_body_width(grid, bead_section: float, surface_height: float = 0.0,
     return float(edges[body[-1] + 1] - edges[body[0]])
 
 
+def bead_liquid_share(grid, bead_section: float, surface_height: float = 0.0) -> float:
+    """Share of the bead's metal in the slice at ``bead_section`` that is
+    liquid (liquidFraction, mushy cells by their fraction), each cell by its
+    area in the section: 0 for a solidified bead, NaN without metal there.
+
+    A bead section still partly liquid is not the bead's final shape: its
+    metal moves faster than the substrate and the section grows behind it
+    as it freezes (the bead study's level 1 at 11 mm behind the wires:
+    29 mm2 with a quarter liquid, 35 mm2 solid near the outlet)."""
+    section = _Section.of(grid, bead_section, surface_height, METAL_THRESHOLD)
+    area = ((section.high - section.low)[:, 1] * (section.high - section.low)[:, 2])
+    metal = (np.clip(section.alpha, 0.0, 1.0) * area)[section.in_slice]
+    # A case written without the liquid fraction does not say
+    if "liquidFraction" not in grid.cell_data.keys():
+        return math.nan
+    liquid = np.clip(np.asarray(grid.cell_data["liquidFraction"]), 0.0, 1.0)[section.in_slice]
+    if not metal.sum() > 0:
+        return math.nan
+    return float((metal * liquid).sum() / metal.sum())
+
+
 #: Cells whose lower face lies this share of their height from the surface
 #: stand on it
 SURFACE_ROW_TOLERANCE = 1e-3

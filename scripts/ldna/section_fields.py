@@ -10,6 +10,7 @@ every 0.25 s from 17.5 to 18.75 s, wetting angles from 31.7 to 57.9 deg and
 body widths from 11.7 to 14.0 mm.  A study that read them at each level's
 last time alone would compare ripple phases, not resolutions; so they are
 read at every written time and averaged over the same windows as the rest.
+So is the liquid share of the section's bead (0: the bead's final shape).
 
 Each time's values are kept in the case's ``sectionFields.csv``, computed
 once per time: ``ldna pack`` keeps that table while it drops the fields
@@ -31,7 +32,8 @@ FILE = "sectionFields.csv"
 #: Its columns after the time: name -> (column, scale from SI to its unit)
 COLUMNS = {"wetting_angle": ("wetting_angle_deg", 1.0),
            "body_width": ("body_width_mm", 1e3),
-           "first_layer_gas": ("first_layer_gas_mm", 1e3)}
+           "first_layer_gas": ("first_layer_gas_mm", 1e3),
+           "section_liquid": ("section_liquid_share", 1.0)}
 #: Two times closer than this [s] are one
 TIME_TOLERANCE = 1e-9
 
@@ -55,8 +57,11 @@ def read(case: Path) -> dict[float, dict[str, float]]:
     rows = {}
     with path.open(newline="") as stream:
         for row in csv.DictReader(stream):
+            # A table written before a column was added lacks it: update()
+            # measures it where the time's fields are still there
             rows[float(row["time_s"])] = {
-                name: float(row[column]) / scale for name, (column, scale) in COLUMNS.items()}
+                name: float(row[column]) / scale for name, (column, scale) in COLUMNS.items()
+                if row.get(column) not in (None, "")}
     return rows
 
 
@@ -67,7 +72,8 @@ def _write(case: Path, rows: dict[float, dict[str, float]]) -> None:
         writer = csv.writer(stream)
         writer.writerow(["time_s", *(column for column, _ in COLUMNS.values())])
         for time in sorted(rows):
-            writer.writerow([f"{time:.12g}", *(f"{rows[time][name] * scale:.9g}"
+            # A column the time's dropped fields can no longer give: NaN
+            writer.writerow([f"{time:.12g}", *(f"{rows[time].get(name, math.nan) * scale:.9g}"
                                                for name, (_, scale) in COLUMNS.items())])
     # A stopped update leaves the table it had
     scratch.replace(path)
@@ -77,7 +83,8 @@ def measure(grid, section: float, surface_height: float = 0.0) -> dict[str, floa
     """The field-read metrics of one time's grid at the section ``section`` [m]."""
     return {"wetting_angle": post.bead_wetting_angle(grid, section, surface_height),
             "body_width": post.bead_body_width(grid, section, surface_height),
-            "first_layer_gas": post.first_layer(grid, section, surface_height)[1]}
+            "first_layer_gas": post.first_layer(grid, section, surface_height)[1],
+            "section_liquid": post.bead_liquid_share(grid, section, surface_height)}
 
 
 def update(case: Path, surface_height: float = 0.0) -> dict[float, dict[str, float]]:
@@ -89,11 +96,16 @@ def update(case: Path, surface_height: float = 0.0) -> dict[float, dict[str, flo
     if section is None:
         return {}
     rows = read(case)
+
+    def known(time: float) -> float | None:
+        return next((t for t in rows if abs(t - time) <= TIME_TOLERANCE), None)
+
     missing = [(t, only_ranks) for t, only_ranks in _written_times(case)
-               if not any(abs(t - known) <= TIME_TOLERANCE for known in rows)]
+               if known(t) is None or len(rows[known(t)]) < len(COLUMNS)]
     for time, only_ranks in missing:
         grid = post.read_case(case, time, decomposed=only_ranks)
-        rows[time] = measure(grid, section, surface_height)
+        rows[known(time) if known(time) is not None else time] = measure(
+            grid, section, surface_height)
     if missing:
         _write(case, rows)
     return rows
@@ -109,7 +121,7 @@ def window_means(rows: dict[float, dict[str, float]], name: str, ends: np.ndarra
     """Means of ``name`` over the times in each window (end - window, end]
     (NaN for a window that holds no written time)."""
     times = np.array(sorted(rows))
-    values = np.array([rows[t][name] for t in times])
+    values = np.array([rows[t].get(name, math.nan) for t in times])
     return np.array([float(values[inside].mean()) if inside.any() else math.nan
                      for inside in (_in_window(times, end, window) for end in ends)])
 

@@ -149,6 +149,41 @@ def test_a_bead_output_zero_at_every_level_beside_lack_of_fusion() -> None:
                not in zero_line for n in fusion)
 
 
+def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> None:
+    """Level 0's section holds 1.3 % liquid, level 1's 23 % (the bead study
+    at 11 mm behind the wires): level 1's section is not the bead's final
+    shape, so the width, height, area, wetting angle and gas film are not
+    compared (no error, no cheapest level), the pool length still is, and
+    the table names the level and the shares.  With level 1 at 4 % every
+    shape output is judged again."""
+    scene = accuracy.BeadScene()
+    members = []
+    for level, h, width, liquid in ((0.0, 0.45, 12.9e-3, 0.013), (1.0, 0.225, 7.6e-3, 0.23)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": width, "bead_height": 4e-3, "bead_area": 30e-6,
+                          "wetting_angle": 50.0, "pool_length": 10e-3 * (1 + h),
+                          "section_liquid": liquid}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    shape = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
+    assert study.not_frozen == ("level1",)
+    assert shape <= set(study.not_acting) and "pool_length" not in study.not_acting
+    assert all(math.isnan(members[0].errors[name]) for name in shape)
+    assert members[0].errors["pool_length"] == pytest.approx((1.45 - 1.225) / 1.225)
+    assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
+               for name in shape)
+    text = accuracy.markdown(study)
+    assert "level0 1.3 %; level1 23 %" in text and "froze, so its shape" in text
+    assert "0 at every level" not in text
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    assert json.loads((tmp_path / "accuracy.json").read_text())["not_frozen"] == ["level1"]
+
+    members[1].outputs["section_liquid"] = 0.04
+    study = accuracy.evaluate(scene, members, None)
+    assert study.not_frozen == () and "bead_width" not in study.not_acting
+    assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
+
+
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
     12 % and 4 % on the width, 3 % and 1 % on the height.  The cheapest level

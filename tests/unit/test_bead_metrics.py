@@ -142,6 +142,28 @@ def test_first_layer_of_a_wetting_bead_and_of_none() -> None:
 
 
 
+@pytest.mark.parametrize("cell", [0.25e-3, 0.125e-3])
+def test_liquid_share_of_a_bead_section(cell: float) -> None:
+    """A bead 4 mm wide and 1 mm high over a molten substrate: liquid in its
+    upper half, the share is 1/2; mushy throughout at a liquid fraction of
+    0.3, 0.3; frozen, 0 (the substrate's liquid is not the bead's); a
+    section without metal above the surface has no share."""
+    from ldna.post import bead_liquid_share
+
+    def in_bead(y: float, z: float) -> bool:
+        return abs(y) < 2e-3 and 0 <= z < 1e-3
+
+    grid = _block(cell, lambda y, z: 1.0 if z < 0 or in_bead(y, z) else 0.0)
+    _, y, z = np.asarray(grid.cell_centers().points).T
+    for liquid, share in ((np.where(z > 0.5e-3, 1.0, 0.0), 0.5),
+                          (np.full_like(z, 0.3), 0.3), (np.zeros_like(z), 0.0)):
+        grid.cell_data["liquidFraction"] = np.where(z < 0, 1.0, liquid)
+        assert bead_liquid_share(grid, 1e-3) == pytest.approx(share, rel=1e-12, abs=1e-15)
+    bare = _block(cell, lambda y, z: 1.0 if z < 0 else 0.0)
+    bare.cell_data["liquidFraction"] = np.ones(bare.n_cells)
+    assert math.isnan(bead_liquid_share(bare, 1e-3))
+
+
 def _layered_block(fine: float, coarse: float, band_top: float, alpha_of) -> "object":
     """Cells of ``fine`` size in a band on the substrate's surface (z from 0 to
     ``band_top``) between cells of ``coarse`` size, as the band meshes of the

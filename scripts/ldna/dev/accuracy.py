@@ -73,6 +73,7 @@ LDNA_OUTPUTS = {
     "bead_area": ("bead area", "mm2", 1e6),
     "wetting_angle": ("wetting angle", "deg", 1.0),
     "first_layer_gas": ("gas film under the bead", "mm", 1e3),
+    "section_liquid": ("liquid share of the bead section", "-", 1.0),
     "bonded_width": ("bonded width", "mm", 1e3),
     "dilution": ("dilution", "-", 1.0),
     "chemical_dilution": ("chemical dilution (base metal in the bead section)", "-", 1.0),
@@ -206,7 +207,7 @@ class BeadScene(LdnaScene):
     outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
         "bead_width", "body_width", "bead_height", "bead_area", "wetting_angle",
         "first_layer_gas", "bonded_width",
-        "penetration", "dilution", "chemical_dilution", "pool_length")}
+        "penetration", "dilution", "chemical_dilution", "pool_length", "section_liquid")}
     #: Errors of the bond's metrics, which are 0 without fusion, are read
     #: against the bead's size in their direction, as ldna steady reads them
     #: (the penetration against the height, the bonded width against the
@@ -226,6 +227,14 @@ class BeadScene(LdnaScene):
     #: docs/validation.md).  A study whose every level stays below it has no
     #: fusion to converge.
     fusion_depth_floor = 0.05e-3
+    #: The outputs of the section's bead shape, which are its final shape
+    #: only where the bead has frozen
+    section_shape_outputs = ("bead_width", "body_width", "bead_height", "bead_area",
+                             "wetting_angle", "first_layer_gas")
+    #: Liquid share of the section's bead above which its shape is not the
+    #: bead's final one: the finest error bound the study reports
+    #: (ERROR_BOUNDS), since that much of the section may still move
+    section_liquid_limit = 0.05
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: a
@@ -624,6 +633,9 @@ class Study:
     fusion_unresolved: bool = False
     #: The three finest levels read without a reference (None with fewer)
     three_level: "dict[str, ThreeLevel] | None" = None
+    #: Levels whose bead section holds more liquid than the scene's
+    #: section_liquid_limit: the section's shape outputs are not judged
+    not_frozen: tuple[str, ...] = ()
     #: Simulated time of the serial cost windows [s] and the processor they
     #: ran on (None: the cost is the members' runs')
     cost_window: float | None = None
@@ -734,10 +746,21 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         abs(outputs.get("penetration", math.nan)) < floor
         for outputs in [reference, *(m.outputs for m in members)])
 
+    # Levels whose section cuts the bead before it froze: their shape there
+    # is not the bead's, so no level's shape outputs are compared
+    liquid_limit = getattr(scene, "section_liquid_limit", math.nan)
+    not_frozen = tuple(m.name for m in members
+                       if m.outputs.get("section_liquid", math.nan) > liquid_limit)
+
     def not_judged(name: str) -> bool:
         if exact is not None or name not in reference:
             return False
         if fusion_unresolved and name in fusion_outputs:
+            return True
+        # A diagnostic of the section, not a result of the weld
+        if name == "section_liquid":
+            return True
+        if not_frozen and name in getattr(scene, "section_shape_outputs", ()):
             return True
         return reference[name] == 0 and all(m.outputs.get(name) == 0 for m in members)
 
@@ -772,7 +795,7 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
                 error_scale(scales, finest3[0].outputs, name))
     return Study(scene, members, reference, reference_name, orders,
                  None if exact is not None else finest, not_acting, fusion_unresolved,
-                 three)
+                 three, not_frozen=not_frozen)
 
 
 #: Error bounds a user picks a level for: the cheapest level within each
@@ -847,6 +870,10 @@ def write_json(study: Study, path: Path) -> None:
         "fusion_unresolved": study.fusion_unresolved,
         "fusion_depth_floor_mm": (1e3 * study.scene.fusion_depth_floor
                                   if hasattr(study.scene, "fusion_depth_floor") else None),
+        # Levels whose bead section was not yet frozen (liquid share above
+        # the limit): the section's shape outputs are then not judged
+        "not_frozen": list(study.not_frozen),
+        "section_liquid_limit": getattr(study.scene, "section_liquid_limit", None),
         # The steadiness judge's shortest window of a bead study [s]
         "min_window_s": getattr(study.scene, "min_window", None),
         # Where core_hours_per_simulated_s comes from: a serial window of
@@ -967,8 +994,22 @@ def markdown(study: Study) -> str:
                   "judged (no error, order or cheapest level; their values are in the "
                   "table): " + ", ".join(meta[n][0] for n in study.not_acting
                                         if n in study.scene.fusion_outputs) + "."]
+    shape = getattr(study.scene, "section_shape_outputs", ())
+    if "section_liquid" in meta:
+        limit = study.scene.section_liquid_limit
+        shares = "; ".join(f"{m.name} {_percent(m.outputs.get('section_liquid', math.nan))}"
+                           for m in study.members)
+        lines += ["", f"Liquid share of the bead section (its metal still liquid, mean of "
+                  f"the fields of the last window): {shares}."]
+        if study.not_frozen:
+            lines += [f"Above {100 * limit:g} % (the finest error bound) the section cuts the "
+                      f"bead before it froze, so its shape is not the bead's final one: at "
+                      f"{', '.join(study.not_frozen)}.  The section's shape outputs are not "
+                      "judged (no error, order or cheapest level; their values are in the "
+                      "table): " + ", ".join(meta[n][0] for n in shape if n in meta) + "."]
     zero = [n for n in study.not_acting
-            if not (study.fusion_unresolved and n in study.scene.fusion_outputs)]
+            if not (study.fusion_unresolved and n in study.scene.fusion_outputs)
+            and not (study.not_frozen and n in shape) and n != "section_liquid"]
     if zero:
         lines += ["", "0 at every level, so not judged (no error, order or cheapest "
                   "level): " + ", ".join(meta[n][0] for n in zero) + "."]
@@ -980,6 +1021,10 @@ def markdown(study: Study) -> str:
                       for m in study.members) + " (a resumed study's legs may have run on "
                   "other machines, beside other work)."]
     return "\n".join(lines) + "\n"
+
+
+def _percent(share: float) -> str:
+    return f"{100 * share:.3g} %" if math.isfinite(share) else "not measured"
 
 
 def _three_level_text(estimate: ThreeLevel, meta: tuple[str, str, float]) -> str:

@@ -130,11 +130,19 @@ def _accuracy(args: argparse.Namespace) -> int:
             print("ldna accuracy: a resumed study's runs may have run on other machines or "
                   "beside other work; --cost-window 0.04 measures every level's cost on this "
                   "machine after the runs", flush=True)
+    from .study import Parameter
+
+    settings = [Parameter.parse(text) for text in args.set]
+    several = [p.name for p in settings if len(p.values) != 1]
+    if several:
+        print(f"ldna accuracy: error: --set gives one value per entry: {', '.join(several)}",
+              file=sys.stderr)
+        return 2
     study, paths = accuracy.run_study(Path(args.case), Path(args.output), scene,
                                       levels=args.levels, max_co=args.max_co,
                                       end_time=end_time, n_procs=args.np, start=start,
                                       resume=args.resume, cost_window=args.cost_window,
-                                      sequence=args.sequence)
+                                      sequence=args.sequence, settings=settings)
     print(accuracy.markdown(study))
     for path in paths:
         print(path)
@@ -471,6 +479,10 @@ def build_parser() -> argparse.ArgumentParser:
                                "levels on this machine now: a study resumed over sessions ran "
                                "its legs on other machines, beside other work [off: the runs' "
                                "own CPU time]")
+    accuracy.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                          help="set an entry in every member's copy of CASE before it is "
+                               "meshed (NAME: a caseParameters entry or FILE:ENTRY; "
+                               "repeatable), e.g. processZoneDownstream=21")
     accuracy.add_argument("--resume", action="store_true",
                           help="continue the members that ran before from their latest "
                                "written time (a study that outlasted a session: run the same "

@@ -35,6 +35,7 @@ from ..foamdict import read_scalars
 from ..steady import MIN_WINDOW as STEADY_MIN_WINDOW
 from ..steady import SCALES as STEADY_SCALES
 from ..stefan import NeumannSolution, front_position
+from ..study import Parameter
 
 
 class Scene(Protocol):
@@ -507,13 +508,23 @@ def resumed_start_time(directory: Path) -> float | None:
 
 def run_member(template: Path, directory: Path, scene: Scene, member: Member,
                end_time: float | None, n_procs: int,
-               start: StartState | None = None, resume: bool = False) -> Member:
+               start: StartState | None = None, resume: bool = False,
+               settings: "list[Parameter] | None" = None) -> Member:
     """Copy, mesh and run one member; fill in its cost and outputs.  With
-    ``resume`` a member that has run before continues from its latest time."""
+    ``resume`` a member that has run before continues from its latest time.
+    ``settings``: entries (one value each) set in every member's copy of the
+    template before it is meshed; a resumed member must have them."""
     control = "system/controlDict"
+    settings = settings or []
     began = resumed_start_time(directory) if resume else None
     if began is not None:
         case = Case(directory)
+        for setting in settings:
+            written = case.written(setting.file, setting.entry)
+            if written != setting.values[0]:
+                raise ValueError(f"{directory.name} ran with {setting.name} {written}, not "
+                                 f"{setting.values[0]}: resume it with the settings it "
+                                 "ran with, or start the study in another folder")
         member.cell_size_mm = scene.set_resolution(case, member.level)
         member.start_time = began
         case.set(control, "startFrom", "latestTime")
@@ -528,6 +539,8 @@ def run_member(template: Path, directory: Path, scene: Scene, member: Member,
     if directory.exists():
         shutil.rmtree(directory)
     case = Case.copy_of(template, directory)
+    for setting in settings:
+        case.set(setting.file, setting.entry, setting.values[0])
     member.cell_size_mm = scene.set_resolution(case, member.level)
     if end_time is not None:
         case.set(control, "endTime", f"{end_time:g}")
@@ -1119,8 +1132,13 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
               start: StartState | None = None,
               resume: bool = False,
               cost_window: float | None = None,
-              sequence: bool = False) -> tuple[Study, list[Path]]:
+              sequence: bool = False,
+              settings: "list[Parameter] | None" = None) -> tuple[Study, list[Path]]:
     """Run the members, evaluate them and write CSV, Markdown and PNG into ``out``.
+
+    ``settings`` (entries of one value each, as ``ldna study --set`` parses
+    them) are set in every member's copy of the template: a longer process
+    zone, a bead section farther behind the wires, ...
 
     With ``start`` every member starts from that developed state, mapped onto
     its mesh, and runs to ``end_time``: the finer levels then cost a window of
@@ -1164,7 +1182,7 @@ def run_study(template: Path, out: Path, scene: Scene | None = None,
                           f"starts from its latest time all the same", flush=True)
             print(f"{scene.name}: running {member.name} ...", flush=True)
             run_member(template, directory, scene, member, level_end, n_procs, level_start,
-                       resume)
+                       resume, settings)
             previous = member
             print(f"  {member.cells} cells, {member.steps} steps, {member.wall_time:.1f} s "
                   f"wall, {member.core_seconds_per_ms:.3g} core-s per simulated ms", flush=True)

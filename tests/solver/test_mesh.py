@@ -14,6 +14,7 @@ misses the laser's footprint or the droplets is refused.  The gmsh route
 """
 from __future__ import annotations
 
+import gzip
 import shutil
 import sys
 from pathlib import Path
@@ -206,6 +207,74 @@ def test_band_keeps_the_substrate_out_of_the_deposit(ldna_case: Case) -> None:
           f"{base0 * 1e9:.3f} -> {base1 * 1e9:.3f} mm3")
     assert gas1 - gas0 <= SURFACE_CROSSING_SHARE * fed
     assert base1 - base0 <= SURFACE_CROSSING_SHARE * fed
+
+
+#: Base cells the longer domain of the mapping test adds behind the saved
+#: weld's outlet
+ADDED_BASE_CELLS = 5
+#: Metal a mapping onto nested cells may gain or lose [m3]: a thousandth of
+#: one process-zone cell of level 0 (0.45 mm cubed), far below what the
+#: cells' interfaces hold (the volume weights' round-off; cells that do not
+#: nest shift a hundred times more)
+NESTED_MAP_TOLERANCE = 1e-3 * 0.45e-3 ** 3
+
+
+def test_a_weld_maps_onto_a_longer_domain(ldna_case: Case, tmp_path: Path) -> None:
+    """The saved weld (28 mm long, 31 base cells) started on a domain five
+    base cells longer, whose cells nest in its own: the cells inside the
+    weld's domain hold its metal and its bead's (each within a thousandth of a cell of
+    the weld's own, summed from its fields), those beyond its outlet the
+    case's initial flat substrate at the ambient temperature, which the
+    bead then travels into (a bead section farther behind the wires than
+    the weld's domain allows)."""
+    weld = Case(Path(shutil.copytree(STEADY_WELD, tmp_path / "weld")))
+    start_time = max(float(t.name) for t in weld.times)
+    time = f"{start_time:g}"
+
+    def cells_written(case: Case) -> None:
+        for function in ("writeCellCentres", "writeCellVolumes"):
+            case.run(f"postProcess -func {function} -time {time}",
+                     log_name=f"postProcess.{function}")
+        for packed in (case / time).glob("*.gz"):
+            packed.with_suffix("").write_bytes(gzip.decompress(packed.read_bytes()))
+            packed.unlink()
+
+    cells_written(weld)
+    weld_length = weld.scalar("system/caseParameters", "length")
+    # The weld's base cells along its length: its deepest layer's columns
+    centres = weld.field("C", time)
+    bottom = centres[:, 2] < centres[:, 2].min() + 1e-9
+    base_cells = len(np.unique(np.round(centres[bottom, 0], 9)))
+    length = weld_length * (base_cells + ADDED_BASE_CELLS) / base_cells
+    ldna_case.set("system/caseParameters", "length", f"{length:.15g}")
+    meshing.set_level(ldna_case, 0)
+    meshing.mesh_case(ldna_case)
+    ldna_case.run("setFields")
+    ldna_case.run(f". '{RUN_FUNCTIONS}' && startFromState '{STEADY_WELD}' {start_time:g}",
+                  log_name="startFromState")
+    cells_written(ldna_case)
+
+    def metal(case: Case, inside: np.ndarray | None = None) -> tuple[float, float]:
+        alpha, volume = case.field("alpha.metal", time), case.field("V", time)
+        z = case.field("C", time)[:, 2]
+        keep = np.ones_like(z, dtype=bool) if inside is None else inside
+        return (float((alpha * volume)[keep].sum()),
+                float((alpha * volume)[keep & (z > 0)].sum()))
+
+    x, _, z = ldna_case.field("C", time).T
+    inside = x < 1e-3 * weld_length
+    (weld_metal, weld_bead), (mapped_metal, mapped_bead) = metal(weld), metal(ldna_case, inside)
+    print(f"{length:.4f} mm long: metal {1e9 * mapped_metal:.6f} mm3 (the weld's "
+          f"{1e9 * weld_metal:.6f}), bead {1e9 * mapped_bead:.6f} mm3 "
+          f"({1e9 * weld_bead:.6f})")
+    assert abs(mapped_metal - weld_metal) <= NESTED_MAP_TOLERANCE
+    assert abs(mapped_bead - weld_bead) <= NESTED_MAP_TOLERANCE
+    alpha, temperature = ldna_case.field("alpha.metal", time), ldna_case.field("T", time)
+    beyond = ~inside
+    ambient = ldna_case.scalar("system/caseParameters", "ambientTemperature")
+    assert beyond.sum() > 0
+    assert np.all(alpha[beyond & (z < 0)] == 1) and np.all(alpha[beyond & (z > 0)] == 0)
+    assert np.all(temperature[beyond] == ambient)
 
 
 @pytest.mark.parametrize("value,start,message", [

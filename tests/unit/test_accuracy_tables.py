@@ -382,3 +382,22 @@ def test_a_bead_study_gives_each_window_mean_its_ripple(tmp_path: Path) -> None:
     assert "bead_width_ripple_mm" in (tmp_path / "accuracy.csv").read_text().splitlines()[0]
     accuracy.plot(study, tmp_path / "accuracy.png")
     assert (tmp_path / "accuracy.png").stat().st_size > 0
+
+
+def test_a_resumed_member_must_have_the_settings_it_ran_with(tmp_path: Path) -> None:
+    """A member that ran (its ranks' folders are there) with the template's
+    28 mm domain is not continued under --set length=33.4194: the error
+    names the member, the entry and both values; with the value it has it
+    is (the run itself is the solver tests')."""
+    from ldna.case import Case
+    from ldna.study import Parameter
+    from solver_cases import TEMPLATE
+
+    directory = tmp_path / "members" / "level0"
+    Case.copy_of(TEMPLATE, directory)
+    (directory / "processor0").mkdir()
+    member = accuracy.Member(level=0.0, max_co=None, cell_size_mm=math.nan)
+    with pytest.raises(ValueError, match=r"level0 ran with length 28, not 33\.4194"):
+        accuracy.run_member(TEMPLATE, directory, accuracy.BeadScene(), member, None, 2,
+                            resume=True, settings=[Parameter.parse("length=33.4194")])
+

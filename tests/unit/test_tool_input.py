@@ -26,6 +26,8 @@ BAD_TOOL_CALLS = [
     (["accuracy", str(TEMPLATE), "out", "--min-window", "nan"], "positive"),
     (["accuracy", str(TEMPLATE), "out", "--min-window", "1"], "--scene bead"),
     (["accuracy", str(TEMPLATE), "out", "--sequence"], "--start-from"),
+    (["accuracy", str(TEMPLATE), "out", "--set", "length=30,40"], "one value per entry"),
+    (["accuracy", str(TEMPLATE), "out", "--set", "length"], "NAME=value1,value2"),
     (["bead-report", "/nonexistent", "out"], "not an OpenFOAM case"),
 ]
 

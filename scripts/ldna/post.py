@@ -87,10 +87,14 @@ class BeadMetrics:
     #: above shows it here (CHANGELOG: the band's substrate cells)
     substrate_gas: float = math.nan
     substrate_least_metal_fraction: float = math.nan
+    #: Share of the section's bead metal still liquid [-] (post only): 0
+    #: where the section shows the bead's final shape
+    section_liquid: float = math.nan
 
     #: What ``ldna post`` reads from the fields, not from the function object
     POST_ONLY = ("wetting_angle", "first_layer_metal_fraction", "first_layer_gas",
-                 "body_width", "substrate_gas", "substrate_least_metal_fraction")
+                 "body_width", "substrate_gas", "substrate_least_metal_fraction",
+                 "section_liquid")
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
@@ -572,6 +576,9 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
         "chemical_dilution": (None if math.isnan(result.chemical_dilution)
                               else result.chemical_dilution),
         "wetting_angle_deg": result.wetting_angle,
+        # None (JSON null) without metal in the section or a liquid fraction
+        "section_liquid_share": (None if math.isnan(result.section_liquid)
+                                 else result.section_liquid),
         # None (JSON null) without a bead in the section
         "first_layer_metal_fraction": (None if math.isnan(result.first_layer_metal_fraction)
                                        else result.first_layer_metal_fraction),
@@ -737,6 +744,7 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
     result.first_layer_metal_fraction, result.first_layer_gas = first_layer(
         grid, result.bead_section, surface_height)
     result.body_width = bead_body_width(grid, result.bead_section, surface_height)
+    result.section_liquid = bead_liquid_share(grid, result.bead_section, surface_height)
     result.substrate_gas, result.substrate_least_metal_fraction = substrate_gas(
         grid, surface_height)
 
@@ -802,6 +810,8 @@ def format_metrics(result: BeadMetrics) -> str:
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
         f"deepest fusion x {1e3 * result.fused_section:8.2f} mm",
         f"wetting angle    {result.wetting_angle:8.1f} deg",
+        f"section liquid   {100 * result.section_liquid:8.1f} % of its bead's metal "
+        "(0: the bead's final shape)",
         f"first layer      {100 * result.first_layer_metal_fraction:8.1f} % metal "
         f"(gas film {1e3 * result.first_layer_gas:.3f} mm)",
         f"substrate gas    {1e9 * result.substrate_gas:8.3f} mm3 (least metal fraction "

@@ -121,6 +121,10 @@ def test_ldna_scene_as_written(tmp_path: Path, shell: str) -> None:
           f"{figures['expected_bead_area_mm2']:.2f} mm2)")
     assert figures["bead_area_mm2"] == pytest.approx(figures["expected_bead_area_mm2"],
                                                      rel=BEAD_AREA_TOLERANCE)
+    # How much of the section's bead is still liquid: a share of its metal
+    share = figures["section_liquid_share"]
+    print(f"section liquid share {share}")
+    assert share is not None and 0 <= share <= 1
     # The bead's start travels from the wires' midpoint with the substrate
     parameters = "system/caseParameters"
     travel_mm = figures["bead_section_mm"] - case.scalar(parameters, "processPosition")

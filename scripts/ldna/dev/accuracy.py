@@ -63,6 +63,10 @@ class Scene(Protocol):
         """Analytical outputs at ``end_time``, or None (compare with the finest run)."""
 
 
+#: Error bounds a user picks a level for: the cheapest level within each
+ERROR_BOUNDS = (0.05, 0.10)
+
+
 #: The LDNA scenes' outputs: label, unit and factor from SI to that unit
 LDNA_OUTPUTS = {
     "pool_width": ("melt-pool width", "mm", 1e3),
@@ -233,9 +237,9 @@ class BeadScene(LdnaScene):
     section_shape_outputs = ("bead_width", "body_width", "bead_height", "bead_area",
                              "wetting_angle", "first_layer_gas")
     #: Liquid share of the section's bead above which its shape is not the
-    #: bead's final one: the finest error bound the study reports
-    #: (ERROR_BOUNDS), since that much of the section may still move
-    section_liquid_limit = 0.05
+    #: bead's final one: the finest error bound the study reports, since
+    #: that much of the section may still move
+    section_liquid_limit = min(ERROR_BOUNDS)
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: a
@@ -811,8 +815,6 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
                  three, not_frozen=not_frozen)
 
 
-#: Error bounds a user picks a level for: the cheapest level within each
-ERROR_BOUNDS = (0.05, 0.10)
 
 
 def cheapest_levels(study: Study) -> dict[str, dict[str, float | None]]:

@@ -293,9 +293,9 @@ def bead_liquid_share(grid, bead_section: float, surface_height: float = 0.0) ->
     area in the section: 0 for a solidified bead, NaN without metal there.
 
     A bead section still partly liquid is not the bead's final shape: its
-    metal moves faster than the substrate and the section grows behind it
-    as it freezes (the bead study's level 1 at 11 mm behind the wires:
-    29 mm2 with a quarter liquid, 35 mm2 solid near the outlet)."""
+    metal still flows along the weld, and the section grows behind it as
+    it freezes (the bead study's level 1 at 11 mm behind the wires: 29 mm2
+    with a quarter liquid, 35 mm2 near the outlet with 3 %)."""
     section = _Section.of(grid, bead_section, surface_height, METAL_THRESHOLD)
     area = ((section.high - section.low)[:, 1] * (section.high - section.low)[:, 2])
     metal = (np.clip(section.alpha, 0.0, 1.0) * area)[section.in_slice]

@@ -296,12 +296,12 @@ def bead_liquid_share(grid, bead_section: float, surface_height: float = 0.0) ->
     metal still flows along the weld, and the section grows behind it as
     it freezes (the bead study's level 1 at 11 mm behind the wires: 29 mm2
     with a quarter liquid, 35 mm2 near the outlet with 3 %)."""
-    section = _Section.of(grid, bead_section, surface_height, METAL_THRESHOLD)
-    area = ((section.high - section.low)[:, 1] * (section.high - section.low)[:, 2])
-    metal = (np.clip(section.alpha, 0.0, 1.0) * area)[section.in_slice]
     # A case written without the liquid fraction does not say
     if "liquidFraction" not in grid.cell_data.keys():
         return math.nan
+    section = _Section.of(grid, bead_section, surface_height, METAL_THRESHOLD)
+    size = section.high - section.low
+    metal = (np.clip(section.alpha, 0.0, 1.0) * size[:, 1] * size[:, 2])[section.in_slice]
     liquid = np.clip(np.asarray(grid.cell_data["liquidFraction"]), 0.0, 1.0)[section.in_slice]
     if not metal.sum() > 0:
         return math.nan
@@ -810,8 +810,9 @@ def format_metrics(result: BeadMetrics) -> str:
         f"bead section x   {1e3 * result.bead_section:8.2f} mm",
         f"deepest fusion x {1e3 * result.fused_section:8.2f} mm",
         f"wetting angle    {result.wetting_angle:8.1f} deg",
-        f"section liquid   {100 * result.section_liquid:8.1f} % of its bead's metal "
-        "(0: the bead's final shape)",
+        (f"section liquid   {100 * result.section_liquid:8.1f} % of its bead's metal "
+         "(0: the bead's final shape)" if not math.isnan(result.section_liquid)
+         else "section liquid        n/a (no metal there or no liquidFraction written)"),
         f"first layer      {100 * result.first_layer_metal_fraction:8.1f} % metal "
         f"(gas film {1e3 * result.first_layer_gas:.3f} mm)",
         f"substrate gas    {1e9 * result.substrate_gas:8.3f} mm3 (least metal fraction "

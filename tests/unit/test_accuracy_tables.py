@@ -13,6 +13,9 @@ import pytest
 
 from ldna.dev import accuracy
 
+#: A bead study's level whose section holds no liquid (its shape judged)
+FROZEN = {"section_liquid": 0.0}
+
 
 @pytest.mark.parametrize("order", [1.0, 2.0])
 def test_order_fit_recovers_a_known_order(order: float) -> None:
@@ -36,10 +39,10 @@ def test_bond_errors_read_against_the_bead() -> None:
     of 0.02 an error of 0.02 (against 1); the bead's own metrics against
     themselves."""
     scene = accuracy.BeadScene()
-    reference = {"bead_width": 10e-3, "bead_height": 4e-3, "penetration": 0.0,
+    reference = {**FROZEN, "bead_width": 10e-3, "bead_height": 4e-3, "penetration": 0.0,
                  "bonded_width": 0.0, "dilution": 0.0}
     coarse = accuracy.Member(level=0, max_co=None, cell_size_mm=0.45)
-    coarse.outputs = {"bead_width": 11e-3, "bead_height": 4e-3, "penetration": 0.2e-3,
+    coarse.outputs = {**FROZEN, "bead_width": 11e-3, "bead_height": 4e-3, "penetration": 0.2e-3,
                       "bonded_width": 1e-3, "dilution": 0.02}
     fine = accuracy.Member(level=1, max_co=None, cell_size_mm=0.225)
     fine.outputs = reference
@@ -56,7 +59,8 @@ def assert_not_judged(study: accuracy.Study, members: list[accuracy.Member],
     level's bead 11 mm wide, the reference's 10 mm): no error, no cheapest level, the
     table says lack of fusion, the bead's width is judged (10 %); returns
     the table's text."""
-    assert study.fusion_unresolved and set(study.not_acting) == names
+    # The section's liquid share is a diagnostic, never judged
+    assert study.fusion_unresolved and set(study.not_acting) == names | {"section_liquid"}
     assert all(math.isnan(members[0].errors[name]) for name in names)
     assert members[0].errors["bead_width"] == pytest.approx(0.1)
     assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
@@ -75,7 +79,7 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     members = []
     for level, h, width in ((0.0, 0.45, 11e-3), (1.0, 0.225, 10e-3)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"bead_width": width, "bead_height": 4e-3, **bond}
+        member.outputs = {**FROZEN, "bead_width": width, "bead_height": 4e-3, **bond}
         members.append(member)
     study = accuracy.evaluate(scene, members, None)
     text = assert_not_judged(study, members, set(bond))
@@ -83,7 +87,7 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     path = tmp_path / "accuracy.json"
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
-    assert set(data["not_acting"]) == set(bond)
+    assert set(data["not_acting"]) == set(bond) | {"section_liquid"}
     assert data["levels"][0]["errors"]["penetration"] is None
 
     members[0].outputs["penetration"] = 0.2e-3
@@ -104,7 +108,7 @@ def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -
     members = []
     for level, h, width, depth in ((0.0, 0.45, 11e-3, 0.016e-3), (0.5, 0.318, 10e-3, 0.007e-3)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"bead_width": width, "bead_height": 4e-3, "penetration": depth,
+        member.outputs = {**FROZEN, "bead_width": width, "bead_height": 4e-3, "penetration": depth,
                           "bonded_width": 0.02e-3, "dilution": 1e-4,
                           "chemical_dilution": 6e-4}
         members.append(member)
@@ -116,11 +120,12 @@ def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -
     path = tmp_path / "accuracy.json"
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
-    assert data["fusion_unresolved"] is True and set(data["not_acting"]) == fusion
+    assert data["fusion_unresolved"] is True
+    assert set(data["not_acting"]) == fusion | {"section_liquid"}
 
     members[0].outputs["penetration"] = 0.08e-3
     study = accuracy.evaluate(scene, members, None)
-    assert not study.fusion_unresolved and study.not_acting == ()
+    assert not study.fusion_unresolved and study.not_acting == ("section_liquid",)
     assert members[0].errors["penetration"] == pytest.approx((0.08 - 0.007) / 4)
 
 
@@ -133,7 +138,7 @@ def test_a_bead_output_zero_at_every_level_beside_lack_of_fusion() -> None:
     members = []
     for level, h, width in ((0.0, 0.45, 11e-3), (1.0, 0.225, 10e-3)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"bead_width": width, "bead_height": 4e-3, "first_layer_gas": 0.0,
+        member.outputs = {**FROZEN, "bead_width": width, "bead_height": 4e-3, "first_layer_gas": 0.0,
                           "penetration": 0.01e-3, "bonded_width": 0.0, "dilution": 0.0,
                           "chemical_dilution": 0.0}
         members.append(member)
@@ -155,7 +160,7 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
     shape, so the width, height, area, wetting angle and gas film are not
     compared (no error, no cheapest level), the pool length still is, and
     the table names the level and the shares.  With level 1 at 4 % every
-    shape output is judged again."""
+    shape output is judged again; with its share not measured, not."""
     scene = accuracy.BeadScene()
     members = []
     for level, h, width, liquid in ((0.0, 0.45, 12.9e-3, 0.013), (1.0, 0.225, 7.6e-3, 0.23)):
@@ -183,6 +188,12 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
     assert study.not_frozen == () and "bead_width" not in study.not_acting
     assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
 
+    # A share not measured (NaN: fields without liquidFraction) does not
+    # show the section frozen
+    members[1].outputs["section_liquid"] = math.nan
+    study = accuracy.evaluate(scene, members, None)
+    assert study.not_frozen == ("level1",) and "bead_width" in study.not_acting
+
 
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     """Levels 0, 0.5 and 1 of a bead study, level 1 the reference: errors of
@@ -190,14 +201,14 @@ def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:
     within 5 % is 0.5 for the width and 0 for the height; within 10 %, 0.5 and
     0; the reference itself is never 'within'."""
     scene = accuracy.BeadScene()
-    reference = {"bead_width": 15e-3, "bead_height": 3e-3}
+    reference = {**FROZEN, "bead_width": 15e-3, "bead_height": 3e-3}
     members = []
     for level, cost, width_error, height_error in ((0.0, 1.0, 0.12, 0.03),
                                                    (0.5, 3.0, 0.04, 0.01), (1.0, 9.0, 0, 0)):
         member = accuracy.Member(level=level, max_co=None,
                                  cell_size_mm=0.45 / 2**level, wall_time=cost, n_procs=1,
                                  start_time=3.0, end_time=4.0, steady=True, first_steady=4.0)
-        member.outputs = {"bead_width": reference["bead_width"] * (1 + width_error),
+        member.outputs = {**FROZEN, "bead_width": reference["bead_width"] * (1 + width_error),
                           "bead_height": reference["bead_height"] * (1 - height_error)}
         members.append(member)
     members[-1].outputs = reference
@@ -318,7 +329,7 @@ def test_a_study_of_three_levels_reports_them(tmp_path: Path) -> None:
     members = []
     for level, h in ((0.0, 0.45), (0.5, 0.318), (1.0, 0.225)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h), "bead_height": 4e-3,
+        member.outputs = {**FROZEN, "bead_width": 1e-3 * (7.0 + 4.0 * h), "bead_height": 4e-3,
                           "penetration": 0.0, "bonded_width": 0.0, "dilution": 0.0}
         members.append(member)
     study = accuracy.evaluate(scene, members, None)
@@ -365,7 +376,7 @@ def test_a_bead_study_gives_each_window_mean_its_ripple(tmp_path: Path) -> None:
     for level, h, ripple in ((0.0, 0.45, 0.4e-3), (1.0, 0.225, 0.2e-3)):
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h, wall_time=1.0,
                                  start_time=12.0, end_time=18.0, steady=True, first_steady=17.0)
-        member.outputs = {"bead_width": 1e-3 * (7.0 + 4.0 * h)}
+        member.outputs = {**FROZEN, "bead_width": 1e-3 * (7.0 + 4.0 * h)}
         member.ripples = {"bead_width": ripple}
         member.fields_in_window = 5
         members.append(member)
@@ -401,3 +412,24 @@ def test_a_resumed_member_must_have_the_settings_it_ran_with(tmp_path: Path) -> 
         accuracy.run_member(TEMPLATE, directory, accuracy.BeadScene(), member, None, 2,
                             resume=True, settings=[Parameter.parse("length=33.4194")])
 
+
+
+def test_a_field_table_written_before_a_column_reads_without_it(tmp_path: Path) -> None:
+    """sectionFields.csv of a study begun before the liquid share was read:
+    its rows read without that column, their window means are NaN (not 0),
+    and written again the table holds the column as NaN for those times."""
+    from ldna import section_fields
+
+    (tmp_path / section_fields.FILE).write_text(
+        "time_s,wetting_angle_deg,body_width_mm,first_layer_gas_mm\n"
+        "1,40,12,0.1\n1.25,50,13,0.2\n")
+    rows = section_fields.read(tmp_path)
+    assert rows[1.0] == pytest.approx({"wetting_angle": 40.0, "body_width": 12e-3,
+                                       "first_layer_gas": 0.1e-3})
+    assert "section_liquid" not in rows[1.25]
+    means = section_fields.window_means(rows, "section_liquid", np.array([1.25]), 0.5)
+    assert math.isnan(means[0])
+    assert section_fields.window_means(rows, "wetting_angle", np.array([1.25]), 0.5)[0] == 45.0
+    section_fields._write(tmp_path, rows)
+    again = section_fields.read(tmp_path)
+    assert math.isnan(again[1.0]["section_liquid"]) and again[1.25]["body_width"] == 13e-3

@@ -763,11 +763,14 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         abs(outputs.get("penetration", math.nan)) < floor
         for outputs in [reference, *(m.outputs for m in members)])
 
-    # Levels whose section cuts the bead before it froze: their shape there
-    # is not the bead's, so no level's shape outputs are compared
-    liquid_limit = getattr(scene, "section_liquid_limit", math.nan)
-    not_frozen = tuple(m.name for m in members
-                       if m.outputs.get("section_liquid", math.nan) > liquid_limit)
+    # Levels whose section cuts the bead before it froze, or whose share was
+    # not measured (NaN: not shown frozen): their shape there need not be
+    # the bead's, so no level's shape outputs are compared
+    not_frozen = ()
+    if hasattr(scene, "section_liquid_limit"):
+        not_frozen = tuple(m.name for m in members
+                           if not m.outputs.get("section_liquid", math.nan)
+                           <= scene.section_liquid_limit)
 
     def not_judged(name: str) -> bool:
         if exact is not None or name not in reference:
@@ -1018,7 +1021,8 @@ def markdown(study: Study) -> str:
                   f"the fields of the last window): {shares}."]
         if study.not_frozen:
             lines += [f"Above {100 * limit:g} % (the finest error bound) the section cuts the "
-                      f"bead before it froze, so its shape is not the bead's final one: at "
+                      f"bead before it froze, so its shape is not the bead's final one, and a "
+                      f"share not measured does not show it frozen: at "
                       f"{', '.join(study.not_frozen)}.  The section's shape outputs are not "
                       "judged (no error, order or cheapest level; their values are in the "
                       "table): " + ", ".join(meta[n][0] for n in shape if n in meta) + "."]

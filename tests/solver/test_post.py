@@ -48,6 +48,11 @@ POOL_GRADIENT = 1e6
 SUBCELL = 0.2
 #: Sub-samples per cell side for the bead's exact metal fractions
 FRACTION_SAMPLES = 40
+#: Height [m] above which the prescribed bead is liquid: on a cell face
+#: (the mesh's faces lie at -5 mm + k CELL), so that the liquid fraction
+#: is 1 or 0 in every cell and the liquid share of the section is the
+#: half-ellipse's area above it
+LIQUID_LEVEL = 1.0e-3
 #: Preset liquid pool of the run (template coordinates [m]) and its temperature [K]
 PRESET_POOL_BOX = "(0.008 -0.004 -0.003) (0.022 0.004 0)"
 PRESET_POOL_TEMPERATURE = 2000.0
@@ -65,8 +70,9 @@ AGREEMENT = 1e-5
 
 
 def prescribed_fields(centres: np.ndarray,
-                      fusion_temperature_: float) -> tuple[np.ndarray, np.ndarray]:
-    """Temperature and metal fraction of the prescribed pool and bead at cell centres.
+                      fusion_temperature_: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Temperature, metal fraction and liquid fraction of the prescribed pool
+    and bead at cell centres.
 
     The fusion line is located between cell centres by interpolating the
     temperature: the field is continuous, as a solved one is, not a step.
@@ -84,7 +90,15 @@ def prescribed_fields(centres: np.ndarray,
     sz = z[:, None, None] + CELL * offsets[None, None, :]
     fraction = ((sy / BEAD_HALF_WIDTH) ** 2 + (sz / BEAD_HEIGHT) ** 2 < 1).mean(axis=(1, 2))
     alpha = np.where(z < 0, 1.0, np.where(x > BEAD_START, fraction, 0.0))
-    return temperature, alpha
+    liquid = np.where(z > LIQUID_LEVEL, 1.0, 0.0)
+    return temperature, alpha, liquid
+
+
+def liquid_share_above(level: float) -> float:
+    """Share of the half-ellipse bead's area above the height ``level``:
+    (4/pi) times the integral of sqrt(1 - u^2) from level/BEAD_HEIGHT to 1."""
+    s = level / BEAD_HEIGHT
+    return 4 / math.pi * (math.pi / 4 - (s * math.sqrt(1 - s * s) + math.asin(s)) / 2)
 
 
 def pool_isotherm_radius(case: Case) -> float:
@@ -124,9 +138,10 @@ def synthetic_pool_case(tmp_path: Path) -> Case:
     case = prepare_test_case("syntheticPool", tmp_path, material_from_template=True)
     case.run("blockMesh")
     case.run("postProcess -func writeCellCentres -time 0", log_name="writeCellCentres")
-    temperature, alpha = prescribed_fields(case.field("C", "0"), fusion_temperature(case))
+    temperature, alpha, liquid = prescribed_fields(case.field("C", "0"), fusion_temperature(case))
     case.write_field("T", time="0", values=temperature)
     case.write_field("alpha.metal", time="0", values=alpha)
+    case.write_field("liquidFraction", time="0", values=liquid)
     return case
 
 
@@ -236,6 +251,14 @@ def test_section_fields_of_the_ranks_folders(synthetic_pool_case: Case, tmp_path
     # lower than the first layer of cells, near the toes
     assert 0 <= decomposed[1.0]["first_layer_gas"] < CELL / 10
     assert 0 < decomposed[1.0]["wetting_angle"] <= 90
+    # The liquid top of the bead: its share of the area is the exact
+    # half-ellipse's above LIQUID_LEVEL, within the metal fractions'
+    # sampling (half a sub-sample along the arc, on both areas of the ratio)
+    liquid = liquid_share_above(LIQUID_LEVEL)
+    sampling = area_tolerance(BEAD_HALF_WIDTH, BEAD_HEIGHT) / FRACTION_SAMPLES
+    bead = math.pi * BEAD_HALF_WIDTH * BEAD_HEIGHT / 2
+    print(f"section liquid share {decomposed[1.0]['section_liquid']:.5f} against {liquid:.5f}")
+    assert decomposed[1.0]["section_liquid"] == pytest.approx(liquid, abs=2 * sampling / bead)
 
 
 def test_post_writes_pictures_headless(synthetic_pool_case: Case) -> None:

@@ -641,11 +641,13 @@ class Study:
     orders: dict[str, float]
     #: The member the errors are read against (None: the analytical answer)
     reference_member: "Member | None" = None
-    #: Outputs that are 0 at every level and in the reference (the bond
-    #: without fusion): nothing to converge, so no error, order or cheapest
-    #: level is read for them; with ``fusion_unresolved`` also the fusion
-    #: outputs of a study none of whose levels fuses by more than the
-    #: metrics resolve
+    #: Outputs for which no error, order or cheapest level is read: those
+    #: 0 at every level and in the reference (the bond without fusion:
+    #: nothing to converge); with ``fusion_unresolved`` the fusion outputs
+    #: of a study none of whose levels fuses by more than the metrics
+    #: resolve; with ``not_frozen`` the section's shape outputs; and the
+    #: section's liquid share, a diagnostic (accuracy.json's
+    #: ``not_acting``: the name is older than the last three)
     not_acting: tuple[str, ...] = ()
     fusion_unresolved: bool = False
     #: The three finest levels read without a reference (None with fewer)

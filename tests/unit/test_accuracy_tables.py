@@ -60,7 +60,8 @@ def assert_not_judged(study: accuracy.Study, members: list[accuracy.Member],
     table says lack of fusion, the bead's width is judged (10 %); returns
     the table's text."""
     # The section's liquid share is a diagnostic, never judged
-    assert study.fusion_unresolved and set(study.not_acting) == names | {"section_liquid"}
+    assert study.fusion_unresolved and set(study.not_judged) == names | {"section_liquid"}
+    assert study.not_judged["section_liquid"] == "diagnostic"
     assert all(math.isnan(members[0].errors[name]) for name in names)
     assert members[0].errors["bead_width"] == pytest.approx(0.1)
     assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
@@ -87,12 +88,13 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     path = tmp_path / "accuracy.json"
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
-    assert set(data["not_acting"]) == set(bond) | {"section_liquid"}
+    assert data["not_judged"] == {**dict.fromkeys(bond, "lack_of_fusion"),
+                                  "section_liquid": "diagnostic"}
     assert data["levels"][0]["errors"]["penetration"] is None
 
     members[0].outputs["penetration"] = 0.2e-3
     study = accuracy.evaluate(scene, members, None)
-    assert "penetration" not in study.not_acting
+    assert "penetration" not in study.not_judged
     assert members[0].errors["penetration"] == pytest.approx(0.2 / 4)
 
 
@@ -121,11 +123,12 @@ def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
     assert data["fusion_unresolved"] is True
-    assert set(data["not_acting"]) == fusion | {"section_liquid"}
+    assert data["not_judged"] == {**dict.fromkeys(fusion, "lack_of_fusion"),
+                                  "section_liquid": "diagnostic"}
 
     members[0].outputs["penetration"] = 0.08e-3
     study = accuracy.evaluate(scene, members, None)
-    assert not study.fusion_unresolved and study.not_acting == ("section_liquid",)
+    assert not study.fusion_unresolved and study.not_judged == {"section_liquid": "diagnostic"}
     assert members[0].errors["penetration"] == pytest.approx((0.08 - 0.007) / 4)
 
 
@@ -146,6 +149,7 @@ def test_a_bead_output_zero_at_every_level_beside_lack_of_fusion() -> None:
     fusion = {"penetration", "bonded_width", "dilution", "chemical_dilution"}
     text = assert_not_judged(study, members, fusion | {"first_layer_gas"})
     assert math.isnan(members[0].errors["first_layer_gas"])
+    assert study.not_judged["first_layer_gas"] == "zero"
     zero_line = next(line for line in text.splitlines() if line.startswith("0 at every level"))
     fusion_line = next(line for line in text.splitlines() if "lack of fusion" in line)
     gas = scene.outputs_meta["first_layer_gas"][0]
@@ -172,7 +176,8 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
     study = accuracy.evaluate(scene, members, None)
     shape = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
     assert study.not_frozen == ("level1",)
-    assert shape <= set(study.not_acting) and "pool_length" not in study.not_acting
+    assert all(study.not_judged.get(name) == "not_frozen" for name in shape)
+    assert "pool_length" not in study.not_judged
     assert all(math.isnan(members[0].errors[name]) for name in shape)
     assert members[0].errors["pool_length"] == pytest.approx((1.45 - 1.225) / 1.225)
     assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
@@ -185,14 +190,14 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
 
     members[1].outputs["section_liquid"] = 0.04
     study = accuracy.evaluate(scene, members, None)
-    assert study.not_frozen == () and "bead_width" not in study.not_acting
+    assert study.not_frozen == () and "bead_width" not in study.not_judged
     assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
 
     # A share not measured (NaN: fields without liquidFraction) does not
     # show the section frozen
     members[1].outputs["section_liquid"] = math.nan
     study = accuracy.evaluate(scene, members, None)
-    assert study.not_frozen == ("level1",) and "bead_width" in study.not_acting
+    assert study.not_frozen == ("level1",) and study.not_judged["bead_width"] == "not_frozen"
 
 
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:

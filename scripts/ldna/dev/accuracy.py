@@ -641,14 +641,10 @@ class Study:
     orders: dict[str, float]
     #: The member the errors are read against (None: the analytical answer)
     reference_member: "Member | None" = None
-    #: Outputs for which no error, order or cheapest level is read: those
-    #: 0 at every level and in the reference (the bond without fusion:
-    #: nothing to converge); with ``fusion_unresolved`` the fusion outputs
-    #: of a study none of whose levels fuses by more than the metrics
-    #: resolve; with ``not_frozen`` the section's shape outputs; and the
-    #: section's liquid share, a diagnostic (accuracy.json's
-    #: ``not_acting``: the name is older than the last three)
-    not_acting: tuple[str, ...] = ()
+    #: Outputs for which no error, order or cheapest level is read, each
+    #: with its reason, a key of NOT_JUDGED_REASONS (accuracy.json's
+    #: ``not_judged``)
+    not_judged: dict[str, str] = field(default_factory=dict)
     fusion_unresolved: bool = False
     #: The three finest levels read without a reference (None with fewer)
     three_level: "dict[str, ThreeLevel] | None" = None
@@ -659,6 +655,16 @@ class Study:
     #: ran on (None: the cost is the members' runs')
     cost_window: float | None = None
     cost_machine: str | None = None
+
+
+#: Why an output of a study is not judged (Study.not_judged), in the
+#: order the checks apply
+NOT_JUDGED_REASONS = {
+    "diagnostic": "a diagnostic of the section, not a result of the weld",
+    "lack_of_fusion": "no level fuses by more than the fusion metrics resolve",
+    "not_frozen": "a level's section cuts the bead before it froze",
+    "zero": "0 at every level and in the reference: nothing to converge",
+}
 
 
 #: Safety factor of the grid convergence index for three grids (Roache 1994;
@@ -774,23 +780,25 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
                            if not m.outputs.get("section_liquid", math.nan)
                            <= scene.section_liquid_limit)
 
-    def not_judged(name: str) -> bool:
+    def reason_not_judged(name: str) -> str | None:
         if exact is not None or name not in reference:
-            return False
-        if fusion_unresolved and name in fusion_outputs:
-            return True
-        # A diagnostic of the section, not a result of the weld
+            return None
         if name == "section_liquid":
-            return True
+            return "diagnostic"
+        if fusion_unresolved and name in fusion_outputs:
+            return "lack_of_fusion"
         if not_frozen and name in getattr(scene, "section_shape_outputs", ()):
-            return True
-        return reference[name] == 0 and all(m.outputs.get(name) == 0 for m in members)
+            return "not_frozen"
+        if reference[name] == 0 and all(m.outputs.get(name) == 0 for m in members):
+            return "zero"
+        return None
 
-    not_acting = tuple(name for name in scene.outputs_meta if not_judged(name))
+    not_judged = {name: reason for name in scene.outputs_meta
+                  if (reason := reason_not_judged(name)) is not None}
     for member in members:
         member.errors = {
             name: abs(value - reference[name]) / size(name)
-            if name in reference and name not in not_acting and size(name) > 0
+            if name in reference and name not in not_judged and size(name) > 0
             else math.nan
             for name, value in member.outputs.items()
         }
@@ -810,13 +818,13 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         three = {}
         for name in scene.outputs_meta:
             values = [m.outputs.get(name, math.nan) for m in finest3]
-            if name in not_acting or not all(math.isfinite(v) for v in values):
+            if name in not_judged or not all(math.isfinite(v) for v in values):
                 continue
             three[name] = three_level_estimate(
                 tuple(m.cell_size_mm for m in finest3), tuple(values),
                 error_scale(scales, finest3[0].outputs, name))
     return Study(scene, members, reference, reference_name, orders,
-                 None if exact is not None else finest, not_acting, fusion_unresolved,
+                 None if exact is not None else finest, not_judged, fusion_unresolved,
                  three, not_frozen=not_frozen)
 
 
@@ -884,7 +892,9 @@ def write_json(study: Study, path: Path) -> None:
         "levels": levels,
         "orders": {n: finite(study.orders.get(n, math.nan)) for n in meta},
         "cheapest_level": cheapest_levels(study),
-        "not_acting": list(study.not_acting),
+        # Outputs without error, order or cheapest level, each with its
+        # reason (NOT_JUDGED_REASONS)
+        "not_judged": dict(study.not_judged),
         # No level fuses by more than the fusion metrics resolve (penetration
         # below fusion_depth_floor_mm at every level)
         "fusion_unresolved": study.fusion_unresolved,
@@ -999,7 +1009,7 @@ def markdown(study: Study) -> str:
     lines += ["", "Cheapest level within 5 % / 10 % of the reference: " + "; ".join(
         f"{meta[n][0]} {_level_or_finer(c['5%'])} / {_level_or_finer(c['10%'])}"
         + reference_ripple(n)
-        for n, c in cheapest.items() if n not in study.not_acting) + "."]
+        for n, c in cheapest.items() if n not in study.not_judged) + "."]
     if study.three_level:
         lines += ["", "The three finest levels on their own (Celik et al. 2008; the grid "
                   f"convergence index with safety factor {GCI_SAFETY_FACTOR:g}, orders above "
@@ -1012,8 +1022,8 @@ def markdown(study: Study) -> str:
                   f"(penetration below {floor:g} mm, their tested depth accuracy, at every "
                   "level): lack of fusion at every level, so the fusion outputs are not "
                   "judged (no error, order or cheapest level; their values are in the "
-                  "table): " + ", ".join(meta[n][0] for n in study.not_acting
-                                        if n in study.scene.fusion_outputs) + "."]
+                  "table): " + ", ".join(meta[n][0] for n, reason in study.not_judged.items()
+                                        if reason == "lack_of_fusion") + "."]
     shape = getattr(study.scene, "section_shape_outputs", ())
     if "section_liquid" in meta:
         limit = study.scene.section_liquid_limit
@@ -1028,9 +1038,7 @@ def markdown(study: Study) -> str:
                       f"{', '.join(study.not_frozen)}.  The section's shape outputs are not "
                       "judged (no error, order or cheapest level; their values are in the "
                       "table): " + ", ".join(meta[n][0] for n in shape if n in meta) + "."]
-    zero = [n for n in study.not_acting
-            if not (study.fusion_unresolved and n in study.scene.fusion_outputs)
-            and not (study.not_frozen and n in shape) and n != "section_liquid"]
+    zero = [n for n, reason in study.not_judged.items() if reason == "zero"]
     if zero:
         lines += ["", "0 at every level, so not judged (no error, order or cheapest "
                   "level): " + ", ".join(meta[n][0] for n in zero) + "."]

@@ -49,10 +49,16 @@ SUBCELL = 0.2
 #: Sub-samples per cell side for the bead's exact metal fractions
 FRACTION_SAMPLES = 40
 #: Height [m] above which the prescribed bead is liquid: on a cell face
-#: (the mesh's faces lie at -5 mm + k CELL), so that the liquid fraction
-#: is 1 or 0 in every cell and the liquid share of the section is the
-#: half-ellipse's area above it
+#: (the mesh's faces lie at -5 mm + k CELL), so that every layer of cells
+#: above it has one liquid fraction and the section's liquid share is a
+#: sum of the half-ellipse's areas between faces
 LIQUID_LEVEL = 1.0e-3
+#: Depth of the prescribed mushy zone [m]: the liquid fraction rises
+#: linearly with the cell centre's height from 0 at LIQUID_LEVEL to 1 at
+#: LIQUID_LEVEL + MUSHY_DEPTH, so the two layers of cells in it are a
+#: quarter and three quarters liquid (a solved pool's edge is mushy, and
+#: the share weights each cell's metal by its fraction)
+MUSHY_DEPTH = 2 * CELL
 #: Preset liquid pool of the run (template coordinates [m]) and its temperature [K]
 PRESET_POOL_BOX = "(0.008 -0.004 -0.003) (0.022 0.004 0)"
 PRESET_POOL_TEMPERATURE = 2000.0
@@ -90,15 +96,27 @@ def prescribed_fields(centres: np.ndarray,
     sz = z[:, None, None] + CELL * offsets[None, None, :]
     fraction = ((sy / BEAD_HALF_WIDTH) ** 2 + (sz / BEAD_HEIGHT) ** 2 < 1).mean(axis=(1, 2))
     alpha = np.where(z < 0, 1.0, np.where(x > BEAD_START, fraction, 0.0))
-    liquid = np.where(z > LIQUID_LEVEL, 1.0, 0.0)
+    liquid = np.clip((z - LIQUID_LEVEL) / MUSHY_DEPTH, 0.0, 1.0)
     return temperature, alpha, liquid
 
 
-def liquid_share_above(level: float) -> float:
+def area_share_above(level: float) -> float:
     """Share of the half-ellipse bead's area above the height ``level``:
     (4/pi) times the integral of sqrt(1 - u^2) from level/BEAD_HEIGHT to 1."""
-    s = level / BEAD_HEIGHT
+    s = min(level / BEAD_HEIGHT, 1.0)
     return 4 / math.pi * (math.pi / 4 - (s * math.sqrt(1 - s * s) + math.asin(s)) / 2)
+
+
+def prescribed_liquid_share() -> float:
+    """The bead's liquid share in the section: each layer of cells above
+    LIQUID_LEVEL holds the half-ellipse's area between its faces, liquid by
+    the prescribed fraction at its centre height."""
+    share, bottom = 0.0, LIQUID_LEVEL
+    while bottom < BEAD_HEIGHT:
+        fraction = min((bottom + CELL / 2 - LIQUID_LEVEL) / MUSHY_DEPTH, 1.0)
+        share += fraction * (area_share_above(bottom) - area_share_above(bottom + CELL))
+        bottom += CELL
+    return share
 
 
 def pool_isotherm_radius(case: Case) -> float:
@@ -251,10 +269,11 @@ def test_section_fields_of_the_ranks_folders(synthetic_pool_case: Case, tmp_path
     # lower than the first layer of cells, near the toes
     assert 0 <= decomposed[1.0]["first_layer_gas"] < CELL / 10
     assert 0 < decomposed[1.0]["wetting_angle"] <= 90
-    # The liquid top of the bead: its share of the area is the exact
-    # half-ellipse's above LIQUID_LEVEL, within the metal fractions'
-    # sampling (half a sub-sample along the arc, on both areas of the ratio)
-    liquid = liquid_share_above(LIQUID_LEVEL)
+    # The mushy and liquid top of the bead: its share of the area is the
+    # exact half-ellipse's between the layers' faces, weighted by their
+    # liquid fractions, within the metal fractions' sampling (half a
+    # sub-sample along the arc, on both areas of the ratio)
+    liquid = prescribed_liquid_share()
     sampling = area_tolerance(BEAD_HALF_WIDTH, BEAD_HEIGHT) / FRACTION_SAMPLES
     bead = math.pi * BEAD_HALF_WIDTH * BEAD_HEIGHT / 2
     print(f"section liquid share {decomposed[1.0]['section_liquid']:.5f} against {liquid:.5f}")

@@ -90,6 +90,7 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     data = json.loads(path.read_text())
     assert data["not_judged"] == {**dict.fromkeys(bond, "lack_of_fusion"),
                                   "section_liquid": "diagnostic"}
+    assert set(data["not_judged_reasons"]) == {"lack_of_fusion", "diagnostic"}
     assert data["levels"][0]["errors"]["penetration"] is None
 
     members[0].outputs["penetration"] = 0.2e-3

@@ -895,6 +895,8 @@ def write_json(study: Study, path: Path) -> None:
         # Outputs without error, order or cheapest level, each with its
         # reason (NOT_JUDGED_REASONS)
         "not_judged": dict(study.not_judged),
+        "not_judged_reasons": {reason: NOT_JUDGED_REASONS[reason]
+                               for reason in sorted(set(study.not_judged.values()))},
         # No level fuses by more than the fusion metrics resolve (penetration
         # below fusion_depth_floor_mm at every level)
         "fusion_unresolved": study.fusion_unresolved,

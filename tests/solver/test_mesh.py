@@ -104,6 +104,25 @@ def written_metal_and_bead(case: Case, time: str,
                           case.field("C", time)[:, 2], inside)
 
 
+def section_profile(alpha: np.ndarray, volume: np.ndarray, centres: np.ndarray,
+                    section: float) -> tuple[float, float, float]:
+    """The bead's transverse area [m2], height and toe-to-toe width [m] in
+    the plane x = ``section``, summed from the cells it cuts above the
+    substrate's surface (cubic there: the process zone's cells), each
+    column's metal thickness the sum of its cells' alpha times their edge.
+    The width spans the columns at least half a cell thick."""
+    edge = np.cbrt(volume)
+    x, y, z = centres.T
+    cut = (np.abs(x - section) < 0.5 * edge) & (z > 0)
+    area = float((alpha * volume / edge)[cut].sum())
+    columns = np.round(y[cut], 9)
+    thickness = {c: float((alpha * edge)[cut][columns == c].sum()) for c in np.unique(columns)}
+    half_edge = {c: 0.5 * float(edge[cut][columns == c].max()) for c in thickness}
+    covered = [c for c, h in thickness.items() if h >= half_edge[c]]
+    width = float(max(covered) - min(covered)) if covered else 0.0
+    return area, max(thickness.values(), default=0.0), width
+
+
 def zone_mask(centres: np.ndarray, p: dict[str, float], shrink: float) -> np.ndarray:
     """Cells whose centre is inside the process zone shrunk by ``shrink`` [m]."""
     x, y, z = (centres[:, i] * 1e3 for i in range(3))
@@ -262,11 +281,15 @@ def test_band_keeps_the_substrate_out_of_the_deposit(ldna_case: Case, tmp_path: 
 #: Base cells the longer domain of the mapping test adds behind the saved
 #: weld's outlet
 ADDED_BASE_CELLS = 5
-#: Metal a mapping onto nested cells may gain or lose [m3]: a thousandth of
-#: one process-zone cell of level 0 (0.45 mm cubed), far below what the
-#: cells' interfaces hold (the volume weights' round-off; cells that do not
-#: nest shift a hundred times more)
-NESTED_MAP_TOLERANCE = 1e-3 * 0.45e-3 ** 3
+#: The process zone's cell edge at level 0 [m]
+LEVEL0_CELL = 0.45e-3
+#: Share of a level-0 process-zone cell by which a mapping onto nested cells
+#: may change the metal (of its volume), the bead section's area (of its
+#: face), height and width (of its edge): the volume weights' round-off,
+#: far below what the cells' interfaces hold (cells that do not nest shift
+#: the metal a hundred times more)
+NESTED_MAP_SHARE = 1e-3
+NESTED_MAP_TOLERANCE = NESTED_MAP_SHARE * LEVEL0_CELL ** 3
 
 
 def test_a_weld_maps_onto_a_longer_domain(ldna_case: Case, tmp_path: Path) -> None:
@@ -305,6 +328,24 @@ def test_a_weld_maps_onto_a_longer_domain(ldna_case: Case, tmp_path: Path) -> No
           f"({1e9 * weld_bead:.6f})")
     assert abs(mapped_metal - weld_metal) <= NESTED_MAP_TOLERANCE
     assert abs(mapped_bead - weld_bead) <= NESTED_MAP_TOLERANCE
+    # The bead's shape, not only its metal: its section where the weld
+    # reads it (beadSectionDistance behind the wires) alike to a thousandth
+    # of a cell
+    section = 1e-3 * (weld.scalar("system/caseParameters", "processPosition")
+                      + weld.scalar("system/caseParameters", "beadSectionDistance"))
+    weld_shape = section_profile(weld.field("alpha.metal", time), weld.field("V", time),
+                                 centres, section)
+    mapped_shape = section_profile(ldna_case.field("alpha.metal", time),
+                                   ldna_case.field("V", time), ldna_case.field("C", time),
+                                   section)
+    print("section {:.4f} mm2, {:.3f} mm high, {:.3f} mm wide (the weld's "
+          "{:.4f}, {:.3f}, {:.3f})".format(*(1e6 * mapped_shape[0], 1e3 * mapped_shape[1],
+                                              1e3 * mapped_shape[2], 1e6 * weld_shape[0],
+                                              1e3 * weld_shape[1], 1e3 * weld_shape[2])))
+    assert weld_shape[1] > 0 and weld_shape[2] > 0
+    assert abs(mapped_shape[0] - weld_shape[0]) <= NESTED_MAP_SHARE * LEVEL0_CELL ** 2
+    assert abs(mapped_shape[1] - weld_shape[1]) <= NESTED_MAP_SHARE * LEVEL0_CELL
+    assert abs(mapped_shape[2] - weld_shape[2]) <= NESTED_MAP_SHARE * LEVEL0_CELL
     alpha, temperature = ldna_case.field("alpha.metal", time), ldna_case.field("T", time)
     beyond = ~inside
     ambient = ldna_case.scalar("system/caseParameters", "ambientTemperature")

@@ -295,8 +295,9 @@ NESTED_MAP_TOLERANCE = NESTED_MAP_SHARE * LEVEL0_CELL ** 3
 def test_a_weld_maps_onto_a_longer_domain(ldna_case: Case, tmp_path: Path) -> None:
     """The saved weld (28 mm long, 31 base cells) started on a domain five
     base cells longer, whose cells nest in its own: the cells inside the
-    weld's domain hold its metal and its bead's (each within a thousandth of a cell of
-    the weld's own, summed from its fields), those beyond its outlet the
+    weld's domain hold its metal and its bead's, and its bead's section
+    where the weld reads it (each within a thousandth of a cell of the
+    weld's own, summed from its fields), those beyond its outlet the
     case's initial flat substrate at the ambient temperature, which the
     bead then travels into (a bead section farther behind the wires than
     the weld's domain allows)."""

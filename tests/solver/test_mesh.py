@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 
 from ldna import meshing
+from ldna import post
 from ldna.case import Case
 from ldna.case import RUN_FUNCTIONS
 from ldna.foamdict import read_scalars
@@ -106,11 +107,12 @@ def written_metal_and_bead(case: Case, time: str,
 
 def section_profile(alpha: np.ndarray, volume: np.ndarray, centres: np.ndarray,
                     section: float) -> tuple[float, float, float]:
-    """The bead's transverse area [m2], height and toe-to-toe width [m] in
-    the plane x = ``section``, summed from the cells it cuts above the
-    substrate's surface (cubic there: the process zone's cells), each
-    column's metal thickness the sum of its cells' alpha times their edge.
-    The width spans the columns at least half a cell thick."""
+    """The bead's transverse area [m2], height and width [m] in the plane
+    x = ``section``, summed from the cells it cuts above the substrate's
+    surface (cubic there: the process zone's cells), each column's metal
+    thickness the sum of its cells' alpha times their edge.  The width is
+    the span between the centres of the outermost columns at least half a
+    cell thick (a cell narrower than toe to toe)."""
     edge = np.cbrt(volume)
     x, y, z = centres.T
     cut = (np.abs(x - section) < 0.5 * edge) & (z > 0)
@@ -330,10 +332,10 @@ def test_a_weld_maps_onto_a_longer_domain(ldna_case: Case, tmp_path: Path) -> No
     assert abs(mapped_metal - weld_metal) <= NESTED_MAP_TOLERANCE
     assert abs(mapped_bead - weld_bead) <= NESTED_MAP_TOLERANCE
     # The bead's shape, not only its metal: its section where the weld
-    # reads it (beadSectionDistance behind the wires) alike to a thousandth
-    # of a cell
-    section = 1e-3 * (weld.scalar("system/caseParameters", "processPosition")
-                      + weld.scalar("system/caseParameters", "beadSectionDistance"))
+    # reads it (its meltPoolMetrics' beadSection) alike to a thousandth of
+    # a cell
+    section = post.configured_bead_section(weld)
+    assert section is not None
     weld_shape = section_profile(weld.field("alpha.metal", time), weld.field("V", time),
                                  centres, section)
     mapped_shape = section_profile(ldna_case.field("alpha.metal", time),

@@ -90,11 +90,19 @@ class BeadMetrics:
     #: Share of the section's bead metal still liquid [-] (post only): 0
     #: where the section shows the bead's final shape
     section_liquid: float = math.nan
+    #: The section's bead surface (its cells of metal fraction within
+    #: SURFACE_METAL_FRACTIONS): its finest and coarsest cells' height [m]
+    #: and the share of it in cells coarser than the finest [-] (post
+    #: only): 0 where the refined zone encloses the bead
+    surface_cell: float = math.nan
+    coarsest_surface_cell: float = math.nan
+    coarse_surface: float = math.nan
 
     #: What ``ldna post`` reads from the fields, not from the function object
     POST_ONLY = ("wetting_angle", "first_layer_metal_fraction", "first_layer_gas",
                  "body_width", "substrate_gas", "substrate_least_metal_fraction",
-                 "section_liquid")
+                 "section_liquid", "surface_cell", "coarsest_surface_cell",
+                 "coarse_surface")
 
     #: Column order of meltPoolMetrics.dat after the time
     FUNCTION_OBJECT_COLUMNS = (
@@ -306,6 +314,37 @@ def bead_liquid_share(grid, bead_section: float, surface_height: float = 0.0) ->
     if not metal.sum() > 0:
         return math.nan
     return float((metal * liquid).sum() / metal.sum())
+
+
+#: Metal fractions between which a cell of the section holds the bead's
+#: surface: the mixed cells, without the round-off of a full or an empty one
+SURFACE_METAL_FRACTIONS = (0.02, 0.98)
+#: Cell heights within this share of each other are one cell size
+CELL_SIZE_TOLERANCE = 0.01
+
+
+def bead_surface_cells(grid, bead_section: float,
+                       surface_height: float = 0.0) -> tuple[float, float, float]:
+    """The cells that hold the bead's surface in the slice at ``bead_section``
+    (metal fraction within ``SURFACE_METAL_FRACTIONS``, above the substrate's
+    surface): the finest one's height [m], the coarsest one's [m], and the
+    share of the surface in cells coarser than the finest, each cell
+    counting for its height (the length of surface a cell holds is about its
+    size); NaN without a surface there.
+
+    The refined zone must enclose the bead: where the bead's top rises out
+    of it, its surface (height, flanks, wetting angle, the pool's top)
+    is read on the base mesh's cells, twice to four times coarser (the bead
+    study's levels before its zone was raised: docs/accuracy-cost.md)."""
+    section = _Section.of(grid, bead_section, surface_height, METAL_THRESHOLD)
+    low, high = SURFACE_METAL_FRACTIONS
+    surface = section.in_slice & (section.alpha > low) & (section.alpha < high)
+    if not surface.any():
+        return math.nan, math.nan, math.nan
+    size = (section.high - section.low)[surface, 2]
+    finest = float(size.min())
+    coarse = size > (1 + CELL_SIZE_TOLERANCE) * finest
+    return finest, float(size.max()), float(size[coarse].sum() / size.sum())
 
 
 #: Cells whose lower face lies this share of their height from the surface
@@ -588,6 +627,13 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
                               else 1e9 * result.substrate_gas),
         "substrate_least_metal_fraction": (None if math.isnan(
             result.substrate_least_metal_fraction) else result.substrate_least_metal_fraction),
+        # None (JSON null) without a bead surface in the section
+        "surface_cell_mm": (None if math.isnan(result.surface_cell)
+                            else 1e3 * result.surface_cell),
+        "coarsest_surface_cell_mm": (None if math.isnan(result.coarsest_surface_cell)
+                                     else 1e3 * result.coarsest_surface_cell),
+        "coarse_surface_share": (None if math.isnan(result.coarse_surface)
+                                 else result.coarse_surface),
         "pool_length_mm": 1e3 * result.pool_length,
         "pool_width_mm": 1e3 * result.pool_width,
         "fused_area_mm2": 1e6 * result.fused_area,
@@ -745,6 +791,8 @@ def post_process(case: Case | Path, output: Path | None = None, time: float | No
         grid, result.bead_section, surface_height)
     result.body_width = bead_body_width(grid, result.bead_section, surface_height)
     result.section_liquid = bead_liquid_share(grid, result.bead_section, surface_height)
+    result.surface_cell, result.coarsest_surface_cell, result.coarse_surface = (
+        bead_surface_cells(grid, result.bead_section, surface_height))
     result.substrate_gas, result.substrate_least_metal_fraction = substrate_gas(
         grid, surface_height)
 
@@ -817,4 +865,19 @@ def format_metrics(result: BeadMetrics) -> str:
         f"(gas film {1e3 * result.first_layer_gas:.3f} mm)",
         f"substrate gas    {1e9 * result.substrate_gas:8.3f} mm3 (least metal fraction "
         f"{result.substrate_least_metal_fraction:.4f}; a solid substrate holds none)",
+        surface_cells_text(result),
     ])
+
+
+def surface_cells_text(result: BeadMetrics) -> str:
+    """The cells the section's bead surface lies in, and whether the refined
+    zone encloses it."""
+    if math.isnan(result.coarse_surface):
+        return "surface cells         n/a (no bead surface in the section)"
+    finest = 1e3 * result.surface_cell
+    if not result.coarse_surface > 0:
+        return f"surface cells    {finest:8.3f} mm (the refined zone encloses the bead)"
+    return (f"surface cells    {finest:8.3f} to {1e3 * result.coarsest_surface_cell:.3f} mm: "
+            f"{100 * result.coarse_surface:.1f} % of the bead's surface lies in cells coarser "
+            f"than {finest:.3f} mm, out of the refined zone (raise beadZoneHeight, "
+            "docs/limitations.md)")

@@ -10,7 +10,9 @@ every 0.25 s from 17.5 to 18.75 s, wetting angles from 31.7 to 57.9 deg and
 body widths from 11.7 to 14.0 mm.  A study that read them at each level's
 last time alone would compare ripple phases, not resolutions; so they are
 read at every written time and averaged over the same windows as the rest.
-So is the liquid share of the section's bead (0: the bead's final shape).
+So are the liquid share of the section's bead (0: the bead's final shape)
+and the share of its surface in coarser cells than its finest (0: the
+refined zone encloses the bead).
 
 Each time's values are kept in the case's ``sectionFields.csv``, computed
 once per time: ``ldna pack`` keeps that table while it drops the fields
@@ -33,7 +35,8 @@ FILE = "sectionFields.csv"
 COLUMNS = {"wetting_angle": ("wetting_angle_deg", 1.0),
            "body_width": ("body_width_mm", 1e3),
            "first_layer_gas": ("first_layer_gas_mm", 1e3),
-           "section_liquid": ("section_liquid_share", 1.0)}
+           "section_liquid": ("section_liquid_share", 1.0),
+           "coarse_surface": ("coarse_surface_share", 1.0)}
 #: Two times closer than this [s] are one
 TIME_TOLERANCE = 1e-9
 
@@ -84,7 +87,8 @@ def measure(grid, section: float, surface_height: float = 0.0) -> dict[str, floa
     return {"wetting_angle": post.bead_wetting_angle(grid, section, surface_height),
             "body_width": post.bead_body_width(grid, section, surface_height),
             "first_layer_gas": post.first_layer(grid, section, surface_height)[1],
-            "section_liquid": post.bead_liquid_share(grid, section, surface_height)}
+            "section_liquid": post.bead_liquid_share(grid, section, surface_height),
+            "coarse_surface": post.bead_surface_cells(grid, section, surface_height)[2]}
 
 
 def update(case: Path, surface_height: float = 0.0) -> dict[float, dict[str, float]]:

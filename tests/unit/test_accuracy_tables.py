@@ -13,8 +13,9 @@ import pytest
 
 from ldna.dev import accuracy
 
-#: A bead study's level whose section holds no liquid (its shape judged)
-FROZEN = {"section_liquid": 0.0}
+#: A bead study's level whose section holds no liquid and whose refined
+#: zone encloses the bead's surface there (its shape judged)
+FROZEN = {"section_liquid": 0.0, "coarse_surface": 0.0}
 
 
 @pytest.mark.parametrize("order", [1.0, 2.0])
@@ -60,7 +61,7 @@ def assert_not_judged(study: accuracy.Study, members: list[accuracy.Member],
     table says lack of fusion, the bead's width is judged (10 %); returns
     the table's text."""
     # The section's liquid share is a diagnostic, never judged
-    assert study.fusion_unresolved and set(study.not_judged) == names | {"section_liquid"}
+    assert study.fusion_unresolved and set(study.not_judged) == names | {"section_liquid", "coarse_surface"}
     assert study.not_judged["section_liquid"] == "diagnostic"
     assert all(math.isnan(members[0].errors[name]) for name in names)
     assert members[0].errors["bead_width"] == pytest.approx(0.1)
@@ -89,7 +90,8 @@ def test_an_output_zero_at_every_level_is_not_judged(tmp_path: Path) -> None:
     accuracy.write_json(study, path)
     data = json.loads(path.read_text())
     assert data["not_judged"] == {**dict.fromkeys(bond, "lack_of_fusion"),
-                                  "section_liquid": "diagnostic"}
+                                  "section_liquid": "diagnostic",
+                                  "coarse_surface": "diagnostic"}
     assert set(data["not_judged_reasons"]) == {"lack_of_fusion", "diagnostic"}
     assert data["levels"][0]["errors"]["penetration"] is None
 
@@ -125,11 +127,13 @@ def test_fusion_below_the_metrics_depth_accuracy_is_not_judged(tmp_path: Path) -
     data = json.loads(path.read_text())
     assert data["fusion_unresolved"] is True
     assert data["not_judged"] == {**dict.fromkeys(fusion, "lack_of_fusion"),
-                                  "section_liquid": "diagnostic"}
+                                  "section_liquid": "diagnostic",
+                                  "coarse_surface": "diagnostic"}
 
     members[0].outputs["penetration"] = 0.08e-3
     study = accuracy.evaluate(scene, members, None)
-    assert not study.fusion_unresolved and study.not_judged == {"section_liquid": "diagnostic"}
+    assert not study.fusion_unresolved and study.not_judged == {
+        "section_liquid": "diagnostic", "coarse_surface": "diagnostic"}
     assert members[0].errors["penetration"] == pytest.approx((0.08 - 0.007) / 4)
 
 
@@ -172,7 +176,7 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
         member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
         member.outputs = {"bead_width": width, "bead_height": 4e-3, "bead_area": 30e-6,
                           "wetting_angle": 50.0, "pool_length": 10e-3 * (1 + h),
-                          "section_liquid": liquid}
+                          "section_liquid": liquid, "coarse_surface": 0.0}
         members.append(member)
     study = accuracy.evaluate(scene, members, None)
     shape = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
@@ -199,6 +203,44 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
     members[1].outputs["section_liquid"] = math.nan
     study = accuracy.evaluate(scene, members, None)
     assert study.not_frozen == ("level1",) and study.not_judged["bead_width"] == "not_frozen"
+
+
+def test_a_bead_out_of_its_refined_zone_is_not_judged(tmp_path: Path) -> None:
+    """A level whose section's bead surface lies 13 % in coarser cells than
+    its finest (its band does not enclose its bead: the zone study's level
+    0 at 15-16 s) is not read at its own resolution: the section's shape
+    outputs are not compared, the pool length still is, and the table names
+    the level and the shares.  At 4 % every shape output is judged again;
+    with the share not measured, not."""
+    scene = accuracy.BeadScene()
+    members = []
+    for level, h, width, coarse in ((0.0, 0.45, 12.9e-3, 0.13), (1.0, 0.225, 7.6e-3, 0.0)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": width, "bead_height": 4e-3, "bead_area": 30e-6,
+                          "wetting_angle": 50.0, "pool_length": 10e-3 * (1 + h),
+                          "section_liquid": 0.0, "coarse_surface": coarse}
+        members.append(member)
+    study = accuracy.evaluate(scene, members, None)
+    shape = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
+    assert study.not_enclosed == ("level0",) and study.not_frozen == ()
+    assert all(study.not_judged.get(name) == "not_enclosed" for name in shape)
+    assert study.not_judged["coarse_surface"] == "diagnostic"
+    assert "pool_length" not in study.not_judged
+    assert all(math.isnan(members[0].errors[name]) for name in shape)
+    text = accuracy.markdown(study)
+    assert "level0 13 %; level1 0 %" in text and "not read at its own resolution" in text
+    accuracy.write_json(study, tmp_path / "accuracy.json")
+    written = json.loads((tmp_path / "accuracy.json").read_text())
+    assert written["not_enclosed"] == ["level0"] and written["coarse_surface_limit"] == 0.05
+
+    members[0].outputs["coarse_surface"] = 0.04
+    study = accuracy.evaluate(scene, members, None)
+    assert study.not_enclosed == () and "bead_width" not in study.not_judged
+    assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
+
+    members[0].outputs["coarse_surface"] = math.nan
+    study = accuracy.evaluate(scene, members, None)
+    assert study.not_enclosed == ("level0",) and study.not_judged["bead_width"] == "not_enclosed"
 
 
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:

@@ -258,3 +258,66 @@ def test_substrate_gas_of_a_substrate_that_took_gas_in(cell: float) -> None:
     assert least == pytest.approx(0.9)
     full = _block(cell, lambda y, z: 1.0 if z < 0 or (abs(y) < 2e-3 and z < 1e-3) else 0.0)
     assert substrate_gas(full) == (0.0, 1.0)
+
+
+#: The synthetic section's meshes [m]: fine cells below the refined zone's
+#: top, cells twice as large above it, one fine cell long along the weld
+FINE_CELL = 0.45e-3
+ZONE_TOP = 3.6e-3
+SECTION_HALF_WIDTH = 6e-3
+SECTION_TOP = 7.2e-3
+
+
+def _two_size_section(bead_half_width: float, bead_height: float):
+    """A transverse slice of hexahedra, FINE_CELL below ZONE_TOP and twice
+    that above, holding a rectangular bead |y| < bead_half_width, z <
+    bead_height; each cell's metal fraction is its overlap with the bead."""
+    import pyvista as pv
+
+    cells, points, alpha = [], [], []
+
+    def add_row(z0: float, size: float) -> None:
+        for y0 in np.arange(-SECTION_HALF_WIDTH, SECTION_HALF_WIDTH - 1e-12, size):
+            corners = [(x, y, z) for z in (z0, z0 + size) for y, x in
+                       ((y0, 0.0), (y0, FINE_CELL), (y0 + size, FINE_CELL), (y0 + size, 0.0))]
+            cells.append([8, *range(len(points), len(points) + 8)])
+            points.extend(corners)
+            overlap_y = max(0.0, min(y0 + size, bead_half_width) - max(y0, -bead_half_width))
+            overlap_z = max(0.0, min(z0 + size, bead_height) - z0)
+            alpha.append(overlap_y * overlap_z / size**2)
+
+    for z0 in np.arange(0.0, ZONE_TOP - 1e-12, FINE_CELL):
+        add_row(z0, FINE_CELL)
+    for z0 in np.arange(ZONE_TOP, SECTION_TOP - 1e-12, 2 * FINE_CELL):
+        add_row(z0, 2 * FINE_CELL)
+    grid = pv.UnstructuredGrid(np.concatenate(cells),
+                               np.full(len(cells), pv.CellType.HEXAHEDRON),
+                               np.array(points, dtype=float))
+    grid.cell_data["alpha.metal"] = np.array(alpha)
+    return grid
+
+
+def test_surface_cells_of_a_bead_whose_top_leaves_the_refined_zone() -> None:
+    """A rectangular bead 6.2 mm wide: 3 mm high, its whole outline lies in
+    the fine cells; 4 mm high, its top lies in the cells above the zone.
+
+    Counted by hand: each flank cuts one cell per fine row, and the top cuts
+    every column the bead spans.  At 3 mm the flanks cut 6 rows on each side
+    below the top row, whose 14 fine cells the top cuts (y edges every 0.45
+    mm from -6 mm: -3.3 ... 3.3): 26 fine cells, share 0.  At 4 mm the
+    flanks cut the 8 fine rows on each side (16 cells of 0.45 mm) and the
+    top the 8 coarse columns from -3.3 to 3.9 mm (8 cells of 0.9 mm): each
+    cell counting for its height, half the surface lies in coarse cells.
+    """
+    from ldna.post import bead_surface_cells
+
+    half_width, section = 3.1e-3, 0.2e-3
+    finest, coarsest, share = bead_surface_cells(_two_size_section(half_width, 3.0e-3), section)
+    assert (finest, coarsest, share) == (pytest.approx(FINE_CELL), pytest.approx(FINE_CELL), 0.0)
+    finest, coarsest, share = bead_surface_cells(_two_size_section(half_width, 4.0e-3), section)
+    expected = 8 * 2 * FINE_CELL / (16 * FINE_CELL + 8 * 2 * FINE_CELL)
+    print(f"surface in coarse cells: {share:.4f} (by hand {expected:.4f})")
+    assert finest == pytest.approx(FINE_CELL) and coarsest == pytest.approx(2 * FINE_CELL)
+    assert share == pytest.approx(expected, rel=1e-12)
+    # No bead: nothing to read
+    assert all(math.isnan(v) for v in bead_surface_cells(_two_size_section(0.0, 0.0), section))

@@ -79,6 +79,8 @@ LDNA_OUTPUTS = {
     "wetting_angle": ("wetting angle", "deg", 1.0),
     "first_layer_gas": ("gas film under the bead", "mm", 1e3),
     "section_liquid": ("liquid share of the bead section", "-", 1.0),
+    "coarse_surface": ("share of the bead section's surface in coarser cells than its finest",
+                       "-", 1.0),
     "bonded_width": ("bonded width", "mm", 1e3),
     "dilution": ("dilution", "-", 1.0),
     "chemical_dilution": ("chemical dilution (base metal in the bead section)", "-", 1.0),
@@ -212,7 +214,8 @@ class BeadScene(LdnaScene):
     outputs_meta = {name: LDNA_OUTPUTS[name] for name in (
         "bead_width", "body_width", "bead_height", "bead_area", "wetting_angle",
         "first_layer_gas", "bonded_width",
-        "penetration", "dilution", "chemical_dilution", "pool_length", "section_liquid")}
+        "penetration", "dilution", "chemical_dilution", "pool_length", "section_liquid",
+        "coarse_surface")}
     #: Errors of the bond's metrics, which are 0 without fusion, are read
     #: against the bead's size in their direction, as ldna steady reads them
     #: (the penetration against the height, the bonded width against the
@@ -240,6 +243,14 @@ class BeadScene(LdnaScene):
     #: bead's final one: the finest error bound the study reports, since
     #: that much of the section may still move
     section_liquid_limit = min(ERROR_BOUNDS)
+    #: Share of the section's bead surface in cells coarser than its finest
+    #: (outside the refined zone or band) above which the level's shape is
+    #: not read at its own resolution: the finest error bound, as the liquid
+    #: share's.  The first study of the zone read 22 % of level 1's section
+    #: metal in the base cells at the bead's top (docs/accuracy-cost.md)
+    coarse_surface_limit = min(ERROR_BOUNDS)
+    #: The section's diagnostics: read and reported, never judged
+    diagnostics = ("section_liquid", "coarse_surface")
     #: Simulated time added each time a level is judged not yet steady [s]
     STRETCH = 0.25
     #: Longest run of a level from its start without ``--end-time`` [s]: a
@@ -651,6 +662,10 @@ class Study:
     #: Levels whose bead section holds more liquid than the scene's
     #: section_liquid_limit: the section's shape outputs are not judged
     not_frozen: tuple[str, ...] = ()
+    #: Levels whose bead section has more of its surface in cells coarser
+    #: than its finest than the scene's coarse_surface_limit: its refined
+    #: zone does not enclose the bead, so the shape outputs are not judged
+    not_enclosed: tuple[str, ...] = ()
     #: Simulated time of the serial cost windows [s] and the processor they
     #: ran on (None: the cost is the members' runs')
     cost_window: float | None = None
@@ -663,6 +678,7 @@ NOT_JUDGED_REASONS = {
     "diagnostic": "a diagnostic of the section, not a result of the weld",
     "lack_of_fusion": "no level fuses by more than the fusion metrics resolve",
     "not_frozen": "a level's section cuts the bead before it froze",
+    "not_enclosed": "a level's refined zone does not enclose its bead's surface in the section",
     "zero": "0 at every level and in the reference: nothing to converge",
 }
 
@@ -779,16 +795,26 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         not_frozen = tuple(m.name for m in members
                            if not m.outputs.get("section_liquid", math.nan)
                            <= scene.section_liquid_limit)
+    # Levels whose bead surface lies partly in coarser cells than their
+    # finest there, or whose share was not measured: their shape is not
+    # read at their resolution
+    not_enclosed = ()
+    if hasattr(scene, "coarse_surface_limit"):
+        not_enclosed = tuple(m.name for m in members
+                             if not m.outputs.get("coarse_surface", math.nan)
+                             <= scene.coarse_surface_limit)
 
     def reason_not_judged(name: str) -> str | None:
         if exact is not None or name not in reference:
             return None
-        if name == "section_liquid":
+        if name in getattr(scene, "diagnostics", ()):
             return "diagnostic"
         if fusion_unresolved and name in fusion_outputs:
             return "lack_of_fusion"
         if not_frozen and name in getattr(scene, "section_shape_outputs", ()):
             return "not_frozen"
+        if not_enclosed and name in getattr(scene, "section_shape_outputs", ()):
+            return "not_enclosed"
         if reference[name] == 0 and all(m.outputs.get(name) == 0 for m in members):
             return "zero"
         return None
@@ -825,7 +851,7 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
                 error_scale(scales, finest3[0].outputs, name))
     return Study(scene, members, reference, reference_name, orders,
                  None if exact is not None else finest, not_judged, fusion_unresolved,
-                 three, not_frozen=not_frozen)
+                 three, not_frozen=not_frozen, not_enclosed=not_enclosed)
 
 
 
@@ -906,6 +932,11 @@ def write_json(study: Study, path: Path) -> None:
         # the limit): the section's shape outputs are then not judged
         "not_frozen": list(study.not_frozen),
         "section_liquid_limit": getattr(study.scene, "section_liquid_limit", None),
+        # Levels whose refined zone did not enclose the section's bead surface
+        # (its share in coarser cells above the limit): the shape outputs
+        # are then not judged
+        "not_enclosed": list(study.not_enclosed),
+        "coarse_surface_limit": getattr(study.scene, "coarse_surface_limit", None),
         # The steadiness judge's shortest window of a bead study [s]
         "min_window_s": getattr(study.scene, "min_window", None),
         # Where core_hours_per_simulated_s comes from: a serial window of
@@ -1040,6 +1071,20 @@ def markdown(study: Study) -> str:
                       f"{', '.join(study.not_frozen)}.  The section's shape outputs are not "
                       "judged (no error, order or cheapest level; their values are in the "
                       "table): " + ", ".join(meta[n][0] for n in shape if n in meta) + "."]
+    if "coarse_surface" in meta:
+        limit = study.scene.coarse_surface_limit
+        shares = "; ".join(f"{m.name} {_percent(m.outputs.get('coarse_surface', math.nan))}"
+                           for m in study.members)
+        lines += ["", f"Share of the bead section's surface in coarser cells than its finest "
+                  f"(out of the refined zone; mean of the fields of the last window): "
+                  f"{shares}."]
+        if study.not_enclosed:
+            lines += [f"Above {100 * limit:g} % (the finest error bound) the level's shape is "
+                      f"not read at its own resolution, and a share not measured does not "
+                      f"show it enclosed: at {', '.join(study.not_enclosed)}.  The section's "
+                      "shape outputs are not judged (no error, order or cheapest level; their "
+                      "values are in the table): "
+                      + ", ".join(meta[n][0] for n in shape if n in meta) + "."]
     zero = [n for n, reason in study.not_judged.items() if reason == "zero"]
     if zero:
         lines += ["", "0 at every level, so not judged (no error, order or cheapest "

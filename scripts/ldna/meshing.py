@@ -237,7 +237,7 @@ def skin_level(case: Path) -> int:
 
 
 def band_level(case: Path) -> int:
-    """How often the band (the start's surface, pool and droplets) is split (0: no band)."""
+    """How often the band (the start's deposit, pool and droplets) is split (0: no band)."""
     return _split_count(case, "topoSetDict.band", "bandLevel")
 
 
@@ -250,7 +250,7 @@ def mesh_case(case: Path, start: tuple[Path, float] | None = None) -> int:
     """Mesh an LDNA case as its Allrun does (blockMesh, snappyHexMesh's
     refinement of the process zone, the fusion skin split ``skinLevel``
     times by topoSet + refineMesh, and with ``start`` = (run, time) the band
-    where that state has its surface, pool and droplets split ``bandLevel``
+    where that state has its deposit, pool and droplets split ``bandLevel``
     times); return the number of cells."""
     def run(command: str, log_name: str | None = None) -> None:
         foamcase.run(Path(case), command, log_name=log_name)

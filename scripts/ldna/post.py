@@ -90,10 +90,10 @@ class BeadMetrics:
     #: Share of the section's bead metal still liquid [-] (post only): 0
     #: where the section shows the bead's final shape
     section_liquid: float = math.nan
-    #: The section's bead surface (its cells of metal fraction within
-    #: SURFACE_METAL_FRACTIONS): its finest and coarsest cells' height [m]
-    #: and the share of it in cells coarser than the finest [-] (post
-    #: only): 0 where the refined zone encloses the bead
+    #: The cells that hold the section's bead top across its width
+    #: (bead_surface_cells): the finest and coarsest one's height [m] and
+    #: the share of its width topped in cells coarser than the finest [-]
+    #: (post only): 0 where the refined zone encloses the bead
     surface_cell: float = math.nan
     coarsest_surface_cell: float = math.nan
     coarse_surface: float = math.nan
@@ -316,35 +316,50 @@ def bead_liquid_share(grid, bead_section: float, surface_height: float = 0.0) ->
     return float((metal * liquid).sum() / metal.sum())
 
 
-#: Metal fractions between which a cell of the section holds the bead's
-#: surface: the mixed cells, without the round-off of a full or an empty one
-SURFACE_METAL_FRACTIONS = (0.02, 0.98)
 #: Cell heights within this share of each other are one cell size
 CELL_SIZE_TOLERANCE = 0.01
 
 
 def bead_surface_cells(grid, bead_section: float,
                        surface_height: float = 0.0) -> tuple[float, float, float]:
-    """The cells that hold the bead's surface in the slice at ``bead_section``
-    (metal fraction within ``SURFACE_METAL_FRACTIONS``, above the substrate's
-    surface): the finest one's height [m], the coarsest one's [m], and the
-    share of the surface in cells coarser than the finest, each cell
-    counting for its height (the length of surface a cell holds is about its
-    size); NaN without a surface there.
+    """The cells that hold the bead's top in the slice at ``bead_section``:
+    across the weld between its toes, the cell in which its metal height
+    profile (what its height, area, body width and wetting angle are read
+    from) ends.  Returns the finest such cell's height [m], the coarsest's
+    [m], and the share of the bead's width whose top lies in cells coarser
+    than the finest; NaN without a bead there.
 
-    The refined zone must enclose the bead: where the bead's top rises out
-    of it, its surface (height, flanks, wetting angle, the pool's top)
-    is read on the base mesh's cells, twice to four times coarser (the bead
-    study's levels before its zone was raised: docs/accuracy-cost.md)."""
+    The refined zone must enclose the bead: where the bead rises or
+    spreads out of it, its shape is read on the base mesh's cells, twice to
+    four times coarser (the bead study's levels before its zone was raised:
+    docs/accuracy-cost.md).  Pores inside the bead and films beyond its
+    toes do not count: they are not its outline."""
     section = _Section.of(grid, bead_section, surface_height, METAL_THRESHOLD)
-    low, high = SURFACE_METAL_FRACTIONS
-    surface = section.in_slice & (section.alpha > low) & (section.alpha < high)
-    if not surface.any():
+    if not section.in_bead.any():
         return math.nan, math.nan, math.nan
-    size = (section.high - section.low)[surface, 2]
+    edges, height = section.metal_height_profile()
+    left, right = section.toes
+    middle, width = 0.5 * (edges[1:] + edges[:-1]), np.diff(edges)
+    # Intervals far narrower than a cell lie between edges that are one but
+    # for the mesh's written round-off
+    cells_across = (section.high - section.low)[section.in_slice, 1]
+    columns = ((middle > left) & (middle < right) & (height > 0)
+               & (width > CELL_SIZE_TOLERANCE * cells_across.min()))
+    cells = np.nonzero(section.in_slice)[0]
+    low, high = section.low[cells], section.high[cells]
+    sizes, widths = [], []
+    for y, top, share in zip(middle[columns], surface_height + height[columns],
+                             width[columns]):
+        holding = (low[:, 1] <= y) & (high[:, 1] > y) & (low[:, 2] < top) & (high[:, 2] >= top)
+        if holding.any():
+            sizes.append(float((high - low)[holding, 2].max()))
+            widths.append(float(share))
+    if not sizes:
+        return math.nan, math.nan, math.nan
+    size, across = np.array(sizes), np.array(widths)
     finest = float(size.min())
     coarse = size > (1 + CELL_SIZE_TOLERANCE) * finest
-    return finest, float(size.max()), float(size[coarse].sum() / size.sum())
+    return finest, float(size.max()), float(across[coarse].sum() / across.sum())
 
 
 #: Cells whose lower face lies this share of their height from the surface
@@ -873,11 +888,11 @@ def surface_cells_text(result: BeadMetrics) -> str:
     """The cells the section's bead surface lies in, and whether the refined
     zone encloses it."""
     if math.isnan(result.coarse_surface):
-        return "surface cells         n/a (no bead surface in the section)"
+        return "bead top cells        n/a (no bead in the section)"
     finest = 1e3 * result.surface_cell
     if not result.coarse_surface > 0:
-        return f"surface cells    {finest:8.3f} mm (the refined zone encloses the bead)"
-    return (f"surface cells    {finest:8.3f} to {1e3 * result.coarsest_surface_cell:.3f} mm: "
-            f"{100 * result.coarse_surface:.1f} % of the bead's surface lies in cells coarser "
-            f"than {finest:.3f} mm, out of the refined zone (raise beadZoneHeight, "
+        return f"bead top cells   {finest:8.3f} mm (the refined zone encloses the bead)"
+    return (f"bead top cells   {finest:8.3f} to {1e3 * result.coarsest_surface_cell:.3f} mm: "
+            f"{100 * result.coarse_surface:.1f} % of the bead's width is topped by cells "
+            f"coarser than {finest:.3f} mm, out of the refined zone (raise beadZoneHeight, "
             "docs/limitations.md)")

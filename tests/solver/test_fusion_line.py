@@ -13,7 +13,7 @@ depths, from a tenth of a cell to more than one, and with the zone's centre
 at several positions relative to the cell centres; on two ranks the same.
 The depth and area also on the bead study's finest mesh (level 0 with
 bandLevel 1 from the saved weld: 0.225 mm cells where the weld has its
-surface and pool), whose fusion outputs ``ldna accuracy`` judges against
+deposit and pool), whose fusion outputs ``ldna accuracy`` judges against
 the same 0.05 mm.
 """
 from __future__ import annotations

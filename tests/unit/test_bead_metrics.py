@@ -264,14 +264,15 @@ def test_substrate_gas_of_a_substrate_that_took_gas_in(cell: float) -> None:
 #: top, cells twice as large above it, one fine cell long along the weld
 FINE_CELL = 0.45e-3
 ZONE_TOP = 3.6e-3
-SECTION_HALF_WIDTH = 6e-3
+SECTION_HALF_WIDTH = 5.4e-3
 SECTION_TOP = 7.2e-3
 
 
-def _two_size_section(bead_half_width: float, bead_height: float):
+def _two_size_section(blocks: list[tuple[float, float, float]]):
     """A transverse slice of hexahedra, FINE_CELL below ZONE_TOP and twice
-    that above, holding a rectangular bead |y| < bead_half_width, z <
-    bead_height; each cell's metal fraction is its overlap with the bead."""
+    that above, holding a bead of rectangular blocks (y from, y to, height)
+    side by side on the surface; each cell's metal fraction is its overlap
+    with them."""
     import pyvista as pv
 
     cells, points, alpha = [], [], []
@@ -282,9 +283,9 @@ def _two_size_section(bead_half_width: float, bead_height: float):
                        ((y0, 0.0), (y0, FINE_CELL), (y0 + size, FINE_CELL), (y0 + size, 0.0))]
             cells.append([8, *range(len(points), len(points) + 8)])
             points.extend(corners)
-            overlap_y = max(0.0, min(y0 + size, bead_half_width) - max(y0, -bead_half_width))
-            overlap_z = max(0.0, min(z0 + size, bead_height) - z0)
-            alpha.append(overlap_y * overlap_z / size**2)
+            alpha.append(sum(max(0.0, min(y0 + size, y1) - max(y0, y_0))
+                             * max(0.0, min(z0 + size, height) - z0)
+                             for y_0, y1, height in blocks) / size**2)
 
     for z0 in np.arange(0.0, ZONE_TOP - 1e-12, FINE_CELL):
         add_row(z0, FINE_CELL)
@@ -297,27 +298,22 @@ def _two_size_section(bead_half_width: float, bead_height: float):
     return grid
 
 
-def test_surface_cells_of_a_bead_whose_top_leaves_the_refined_zone() -> None:
-    """A rectangular bead 6.2 mm wide: 3 mm high, its whole outline lies in
-    the fine cells; 4 mm high, its top lies in the cells above the zone.
-
-    Counted by hand: each flank cuts one cell per fine row, and the top cuts
-    every column the bead spans.  At 3 mm the flanks cut 6 rows on each side
-    below the top row, whose 14 fine cells the top cuts (y edges every 0.45
-    mm from -6 mm: -3.3 ... 3.3): 26 fine cells, share 0.  At 4 mm the
-    flanks cut the 8 fine rows on each side (16 cells of 0.45 mm) and the
-    top the 8 coarse columns from -3.3 to 3.9 mm (8 cells of 0.9 mm): each
-    cell counting for its height, half the surface lies in coarse cells.
+def test_the_cells_that_top_a_bead_rising_out_of_the_refined_zone() -> None:
+    """A stepped bead 5.4 mm wide (|y| < 2.7 mm, on cell edges of both
+    sizes): 3 mm high, its top lies in the 0.45 mm cells across its whole
+    width; raised to 4 mm for |y| < 0.9 mm, that 1.8 mm of its width is
+    topped by the 0.9 mm cells above the zone (3.6 mm): a third of it.
     """
     from ldna.post import bead_surface_cells
 
-    half_width, section = 3.1e-3, 0.2e-3
-    finest, coarsest, share = bead_surface_cells(_two_size_section(half_width, 3.0e-3), section)
+    section = 0.2e-3
+    low = [(-2.7e-3, 2.7e-3, 3.0e-3)]
+    finest, coarsest, share = bead_surface_cells(_two_size_section(low), section)
     assert (finest, coarsest, share) == (pytest.approx(FINE_CELL), pytest.approx(FINE_CELL), 0.0)
-    finest, coarsest, share = bead_surface_cells(_two_size_section(half_width, 4.0e-3), section)
-    expected = 8 * 2 * FINE_CELL / (16 * FINE_CELL + 8 * 2 * FINE_CELL)
-    print(f"surface in coarse cells: {share:.4f} (by hand {expected:.4f})")
+    stepped = [(-2.7e-3, -0.9e-3, 3.0e-3), (-0.9e-3, 0.9e-3, 4.0e-3), (0.9e-3, 2.7e-3, 3.0e-3)]
+    finest, coarsest, share = bead_surface_cells(_two_size_section(stepped), section)
+    print(f"width topped by coarse cells: {share:.4f} (by hand {1 / 3:.4f})")
     assert finest == pytest.approx(FINE_CELL) and coarsest == pytest.approx(2 * FINE_CELL)
-    assert share == pytest.approx(expected, rel=1e-12)
+    assert share == pytest.approx(1 / 3, rel=1e-9)
     # No bead: nothing to read
-    assert all(math.isnan(v) for v in bead_surface_cells(_two_size_section(0.0, 0.0), section))
+    assert all(math.isnan(v) for v in bead_surface_cells(_two_size_section([]), section))

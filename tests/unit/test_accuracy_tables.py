@@ -163,6 +163,44 @@ def test_a_bead_output_zero_at_every_level_beside_lack_of_fusion() -> None:
                not in zero_line for n in fusion)
 
 
+#: The section's shape outputs a bead study judges only on a frozen section
+#: read at its level's resolution
+SHAPE = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
+
+
+def _two_bead_levels(level0: dict[str, float], level1: dict[str, float]) -> list:
+    """Levels 0 and 1 of a bead study, 12.9 and 7.6 mm wide, their pool
+    lengths 10 (1 + h) mm, frozen and enclosed but for ``level0`` and
+    ``level1``'s diagnostics."""
+    members = []
+    for level, h, width, diagnostics in ((0.0, 0.45, 12.9e-3, level0),
+                                         (1.0, 0.225, 7.6e-3, level1)):
+        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
+        member.outputs = {"bead_width": width, "bead_height": 4e-3, "bead_area": 30e-6,
+                          "wetting_angle": 50.0, "pool_length": 10e-3 * (1 + h),
+                          **FROZEN, **diagnostics}
+        members.append(member)
+    return members
+
+
+def _shape_not_judged(members: list, reason: str) -> "accuracy.Study":
+    """The study of ``members``: its shape outputs not judged for ``reason``,
+    its pool length judged; the level 0 errors of the shape NaN."""
+    study = accuracy.evaluate(accuracy.BeadScene(), members, None)
+    assert all(study.not_judged.get(name) == reason for name in SHAPE)
+    assert "pool_length" not in study.not_judged
+    assert all(math.isnan(members[0].errors[name]) for name in SHAPE)
+    assert members[0].errors["pool_length"] == pytest.approx((1.45 - 1.225) / 1.225)
+    return study
+
+
+def _shape_judged(members: list) -> "accuracy.Study":
+    study = accuracy.evaluate(accuracy.BeadScene(), members, None)
+    assert not SHAPE & set(study.not_judged)
+    assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
+    return study
+
+
 def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> None:
     """Level 0's section holds 1.3 % liquid, level 1's 23 % (the bead study
     at 11 mm behind the wires): level 1's section is not the bead's final
@@ -170,23 +208,11 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
     compared (no error, no cheapest level), the pool length still is, and
     the table names the level and the shares.  With level 1 at 4 % every
     shape output is judged again; with its share not measured, not."""
-    scene = accuracy.BeadScene()
-    members = []
-    for level, h, width, liquid in ((0.0, 0.45, 12.9e-3, 0.013), (1.0, 0.225, 7.6e-3, 0.23)):
-        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"bead_width": width, "bead_height": 4e-3, "bead_area": 30e-6,
-                          "wetting_angle": 50.0, "pool_length": 10e-3 * (1 + h),
-                          "section_liquid": liquid, "coarse_surface": 0.0}
-        members.append(member)
-    study = accuracy.evaluate(scene, members, None)
-    shape = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
+    members = _two_bead_levels({"section_liquid": 0.013}, {"section_liquid": 0.23})
+    study = _shape_not_judged(members, "not_frozen")
     assert study.not_frozen == ("level1",)
-    assert all(study.not_judged.get(name) == "not_frozen" for name in shape)
-    assert "pool_length" not in study.not_judged
-    assert all(math.isnan(members[0].errors[name]) for name in shape)
-    assert members[0].errors["pool_length"] == pytest.approx((1.45 - 1.225) / 1.225)
     assert all(accuracy.cheapest_levels(study)[name] == {"5%": None, "10%": None}
-               for name in shape)
+               for name in SHAPE)
     text = accuracy.markdown(study)
     assert "level0 1.3 %; level1 23 %" in text and "froze, so its shape" in text
     assert "0 at every level" not in text
@@ -194,39 +220,24 @@ def test_a_section_cut_before_the_bead_froze_is_not_judged(tmp_path: Path) -> No
     assert json.loads((tmp_path / "accuracy.json").read_text())["not_frozen"] == ["level1"]
 
     members[1].outputs["section_liquid"] = 0.04
-    study = accuracy.evaluate(scene, members, None)
-    assert study.not_frozen == () and "bead_width" not in study.not_judged
-    assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
-
+    assert _shape_judged(members).not_frozen == ()
     # A share not measured (NaN: fields without liquidFraction) does not
     # show the section frozen
     members[1].outputs["section_liquid"] = math.nan
-    study = accuracy.evaluate(scene, members, None)
-    assert study.not_frozen == ("level1",) and study.not_judged["bead_width"] == "not_frozen"
+    assert _shape_not_judged(members, "not_frozen").not_frozen == ("level1",)
 
 
 def test_a_bead_out_of_its_refined_zone_is_not_judged(tmp_path: Path) -> None:
-    """A level whose section's bead surface lies 13 % in coarser cells than
-    its finest (its band does not enclose its bead: the zone study's level
-    0 at 15-16 s) is not read at its own resolution: the section's shape
-    outputs are not compared, the pool length still is, and the table names
-    the level and the shares.  At 4 % every shape output is judged again;
-    with the share not measured, not."""
-    scene = accuracy.BeadScene()
-    members = []
-    for level, h, width, coarse in ((0.0, 0.45, 12.9e-3, 0.13), (1.0, 0.225, 7.6e-3, 0.0)):
-        member = accuracy.Member(level=level, max_co=None, cell_size_mm=h)
-        member.outputs = {"bead_width": width, "bead_height": 4e-3, "bead_area": 30e-6,
-                          "wetting_angle": 50.0, "pool_length": 10e-3 * (1 + h),
-                          "section_liquid": 0.0, "coarse_surface": coarse}
-        members.append(member)
-    study = accuracy.evaluate(scene, members, None)
-    shape = {"bead_width", "bead_height", "bead_area", "wetting_angle"}
+    """A level whose section's bead is topped by cells coarser than its
+    finest over 13 % of its width (its band does not enclose its bead: the
+    raised-zone study's level 0 read up to 9 %) is not read at its own
+    resolution: the section's shape outputs are not compared, the pool
+    length still is, and the table names the level and the shares.  At 4 %
+    every shape output is judged again; with the share not measured, not."""
+    members = _two_bead_levels({"coarse_surface": 0.13}, {})
+    study = _shape_not_judged(members, "not_enclosed")
     assert study.not_enclosed == ("level0",) and study.not_frozen == ()
-    assert all(study.not_judged.get(name) == "not_enclosed" for name in shape)
     assert study.not_judged["coarse_surface"] == "diagnostic"
-    assert "pool_length" not in study.not_judged
-    assert all(math.isnan(members[0].errors[name]) for name in shape)
     text = accuracy.markdown(study)
     assert "level0 13 %; level1 0 %" in text and "not read at its own resolution" in text
     accuracy.write_json(study, tmp_path / "accuracy.json")
@@ -234,13 +245,9 @@ def test_a_bead_out_of_its_refined_zone_is_not_judged(tmp_path: Path) -> None:
     assert written["not_enclosed"] == ["level0"] and written["coarse_surface_limit"] == 0.05
 
     members[0].outputs["coarse_surface"] = 0.04
-    study = accuracy.evaluate(scene, members, None)
-    assert study.not_enclosed == () and "bead_width" not in study.not_judged
-    assert members[0].errors["bead_width"] == pytest.approx((12.9 - 7.6) / 7.6)
-
+    assert _shape_judged(members).not_enclosed == ()
     members[0].outputs["coarse_surface"] = math.nan
-    study = accuracy.evaluate(scene, members, None)
-    assert study.not_enclosed == ("level0",) and study.not_judged["bead_width"] == "not_enclosed"
+    assert _shape_not_judged(members, "not_enclosed").not_enclosed == ("level0",)
 
 
 def test_the_cheapest_level_within_each_bound(tmp_path: Path) -> None:

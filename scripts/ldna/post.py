@@ -894,5 +894,5 @@ def surface_cells_text(result: BeadMetrics) -> str:
         return f"bead top cells   {finest:8.3f} mm (the refined zone encloses the bead)"
     return (f"bead top cells   {finest:8.3f} to {1e3 * result.coarsest_surface_cell:.3f} mm: "
             f"{100 * result.coarse_surface:.1f} % of the bead's width is topped by cells "
-            f"coarser than {finest:.3f} mm, out of the refined zone (raise beadZoneHeight, "
-            "docs/limitations.md)")
+            f"coarser than {finest:.3f} mm: out of the refined cells (a process zone below the "
+            "bead's top, or a band split from another bead; docs/limitations.md)")

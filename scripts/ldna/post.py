@@ -93,7 +93,7 @@ class BeadMetrics:
     #: The cells that hold the section's bead top across its width
     #: (bead_surface_cells): the finest and coarsest one's height [m] and
     #: the share of its width topped in cells coarser than the finest [-]
-    #: (post only): 0 where the refined zone encloses the bead
+    #: (post only): 0 where the refined cells enclose the bead
     surface_cell: float = math.nan
     coarsest_surface_cell: float = math.nan
     coarse_surface: float = math.nan
@@ -642,7 +642,7 @@ def summary(case: Case | Path, result: BeadMetrics, time: float) -> dict[str, fl
                               else 1e9 * result.substrate_gas),
         "substrate_least_metal_fraction": (None if math.isnan(
             result.substrate_least_metal_fraction) else result.substrate_least_metal_fraction),
-        # None (JSON null) without a bead surface in the section
+        # None (JSON null) without a bead in the section
         "surface_cell_mm": (None if math.isnan(result.surface_cell)
                             else 1e3 * result.surface_cell),
         "coarsest_surface_cell_mm": (None if math.isnan(result.coarsest_surface_cell)
@@ -885,13 +885,13 @@ def format_metrics(result: BeadMetrics) -> str:
 
 
 def surface_cells_text(result: BeadMetrics) -> str:
-    """The cells the section's bead surface lies in, and whether the refined
-    zone encloses it."""
+    """The cells that top the section's bead, and whether the refined cells
+    enclose it."""
     if math.isnan(result.coarse_surface):
         return "bead top cells        n/a (no bead in the section)"
     finest = 1e3 * result.surface_cell
     if not result.coarse_surface > 0:
-        return f"bead top cells   {finest:8.3f} mm (the refined zone encloses the bead)"
+        return f"bead top cells   {finest:8.3f} mm (the refined cells enclose the bead)"
     return (f"bead top cells   {finest:8.3f} to {1e3 * result.coarsest_surface_cell:.3f} mm: "
             f"{100 * result.coarse_surface:.1f} % of the bead's width is topped by cells "
             f"coarser than {finest:.3f} mm: out of the refined cells (a process zone below the "

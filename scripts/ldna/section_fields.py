@@ -11,8 +11,8 @@ body widths from 11.7 to 14.0 mm.  A study that read them at each level's
 last time alone would compare ripple phases, not resolutions; so they are
 read at every written time and averaged over the same windows as the rest.
 So are the liquid share of the section's bead (0: the bead's final shape)
-and the share of its surface in coarser cells than its finest (0: the
-refined zone encloses the bead).
+and the share of its width topped by cells coarser than its finest (0:
+the refined cells enclose the bead).
 
 Each time's values are kept in the case's ``sectionFields.csv``, computed
 once per time: ``ldna pack`` keeps that table while it drops the fields

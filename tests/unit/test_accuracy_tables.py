@@ -60,8 +60,9 @@ def assert_not_judged(study: accuracy.Study, members: list[accuracy.Member],
     level's bead 11 mm wide, the reference's 10 mm): no error, no cheapest level, the
     table says lack of fusion, the bead's width is judged (10 %); returns
     the table's text."""
-    # The section's liquid share is a diagnostic, never judged
-    assert study.fusion_unresolved and set(study.not_judged) == names | {"section_liquid", "coarse_surface"}
+    # The section's liquid share and coarse top are diagnostics, never judged
+    assert study.fusion_unresolved and set(study.not_judged) == names | {
+        "section_liquid", "coarse_surface"}
     assert study.not_judged["section_liquid"] == "diagnostic"
     assert all(math.isnan(members[0].errors[name]) for name in names)
     assert members[0].errors["bead_width"] == pytest.approx(0.1)

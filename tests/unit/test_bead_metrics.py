@@ -92,15 +92,22 @@ def test_a_run_restarted_from_the_same_time_replaces_the_earlier_rows(tmp_path: 
     assert (table[:, 1:] == 2.0).all()
 
 
+def _cubes(cell: float, origin: tuple[float, float, float],
+           size: tuple[float, float, float]) -> "object":
+    """Cubic cells of edge ``cell`` filling the box at ``origin`` of ``size``
+    [m], as the OpenFOAM reader gives a mesh (an unstructured grid)."""
+    import pyvista as pv
+
+    shape = tuple(round(length / cell) for length in size)
+    return pv.ImageData(dimensions=tuple(n + 1 for n in shape), spacing=(cell,) * 3,
+                        origin=origin).cast_to_unstructured_grid()
+
+
 def _block(cell: float, alpha_of) -> "object":
     """A block of cubic cells (x 0-2 mm, y -3-3 mm, z -1-1 mm) as the
     OpenFOAM reader gives it, with alpha.metal from ``alpha_of(y, z)`` of
     each cell's centre."""
-    import pyvista as pv
-
-    shape = (round(2e-3 / cell), round(6e-3 / cell), round(2e-3 / cell))
-    grid = pv.ImageData(dimensions=tuple(n + 1 for n in shape), spacing=(cell,) * 3,
-                        origin=(0.0, -3e-3, -1e-3)).cast_to_unstructured_grid()
+    grid = _cubes(cell, (0.0, -3e-3, -1e-3), (2e-3, 6e-3, 2e-3))
     centres = np.asarray(grid.cell_centers().points)
     grid.cell_data["alpha.metal"] = np.array([alpha_of(y, z) for _, y, z in centres])
     return grid
@@ -269,32 +276,21 @@ SECTION_TOP = 7.2e-3
 
 
 def _two_size_section(blocks: list[tuple[float, float, float]]):
-    """A transverse slice of hexahedra, FINE_CELL below ZONE_TOP and twice
-    that above, holding a bead of rectangular blocks (y from, y to, height)
-    side by side on the surface; each cell's metal fraction is its overlap
-    with them."""
-    import pyvista as pv
-
-    cells, points, alpha = [], [], []
-
-    def add_row(z0: float, size: float) -> None:
-        for y0 in np.arange(-SECTION_HALF_WIDTH, SECTION_HALF_WIDTH - 1e-12, size):
-            corners = [(x, y, z) for z in (z0, z0 + size) for y, x in
-                       ((y0, 0.0), (y0, FINE_CELL), (y0 + size, FINE_CELL), (y0 + size, 0.0))]
-            cells.append([8, *range(len(points), len(points) + 8)])
-            points.extend(corners)
-            alpha.append(sum(max(0.0, min(y0 + size, y1) - max(y0, y_0))
-                             * max(0.0, min(z0 + size, height) - z0)
-                             for y_0, y1, height in blocks) / size**2)
-
-    for z0 in np.arange(0.0, ZONE_TOP - 1e-12, FINE_CELL):
-        add_row(z0, FINE_CELL)
-    for z0 in np.arange(ZONE_TOP, SECTION_TOP - 1e-12, 2 * FINE_CELL):
-        add_row(z0, 2 * FINE_CELL)
-    grid = pv.UnstructuredGrid(np.concatenate(cells),
-                               np.full(len(cells), pv.CellType.HEXAHEDRON),
-                               np.array(points, dtype=float))
-    grid.cell_data["alpha.metal"] = np.array(alpha)
+    """A transverse slice, cubes of FINE_CELL below ZONE_TOP and of twice
+    that above (one fine cell long along the weld), holding a bead of
+    rectangular blocks (y from, y to, height) side by side on the surface;
+    each cell's metal fraction is its overlap with them."""
+    fine = _cubes(FINE_CELL, (0.0, -SECTION_HALF_WIDTH, 0.0),
+                  (FINE_CELL, 2 * SECTION_HALF_WIDTH, ZONE_TOP))
+    coarse = _cubes(2 * FINE_CELL, (0.0, -SECTION_HALF_WIDTH, ZONE_TOP),
+                    (2 * FINE_CELL, 2 * SECTION_HALF_WIDTH, SECTION_TOP - ZONE_TOP))
+    grid = fine.merge(coarse, merge_points=False)
+    bounds = np.array([grid.get_cell(i).bounds for i in range(grid.n_cells)])
+    y0, y1, z0, z1 = bounds[:, 2], bounds[:, 3], bounds[:, 4], bounds[:, 5]
+    overlap = sum((np.clip(np.minimum(y1, right) - np.maximum(y0, left), 0, None)
+                   * np.clip(np.minimum(z1, height) - z0, 0, None)
+                   for left, right, height in blocks), np.zeros(grid.n_cells))
+    grid.cell_data["alpha.metal"] = overlap / ((y1 - y0) * (z1 - z0))
     return grid
 
 

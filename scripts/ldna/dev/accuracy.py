@@ -79,8 +79,8 @@ LDNA_OUTPUTS = {
     "wetting_angle": ("wetting angle", "deg", 1.0),
     "first_layer_gas": ("gas film under the bead", "mm", 1e3),
     "section_liquid": ("liquid share of the bead section", "-", 1.0),
-    "coarse_surface": ("share of the bead section's surface in coarser cells than its finest",
-                       "-", 1.0),
+    "coarse_surface": ("share of the bead section's width topped by cells coarser than its "
+                       "finest", "-", 1.0),
     "bonded_width": ("bonded width", "mm", 1e3),
     "dilution": ("dilution", "-", 1.0),
     "chemical_dilution": ("chemical dilution (base metal in the bead section)", "-", 1.0),
@@ -243,11 +243,11 @@ class BeadScene(LdnaScene):
     #: bead's final one: the finest error bound the study reports, since
     #: that much of the section may still move
     section_liquid_limit = min(ERROR_BOUNDS)
-    #: Share of the section's bead surface in cells coarser than its finest
-    #: (outside the refined zone or band) above which the level's shape is
-    #: not read at its own resolution: the finest error bound, as the liquid
-    #: share's.  The first study of the zone read 22 % of level 1's section
-    #: metal in the base cells at the bead's top (docs/accuracy-cost.md)
+    #: Share of the section's bead width topped by cells coarser than its
+    #: finest (outside the refined zone or band) above which the level's
+    #: shape is not read at its own resolution: the finest error bound, as
+    #: the liquid share's.  The superseded study's level 1 read 74 % at
+    #: 32.25 s (docs/accuracy-cost.md)
     coarse_surface_limit = min(ERROR_BOUNDS)
     #: The section's diagnostics: read and reported, never judged
     diagnostics = ("section_liquid", "coarse_surface")
@@ -662,9 +662,10 @@ class Study:
     #: Levels whose bead section holds more liquid than the scene's
     #: section_liquid_limit: the section's shape outputs are not judged
     not_frozen: tuple[str, ...] = ()
-    #: Levels whose bead section has more of its surface in cells coarser
-    #: than its finest than the scene's coarse_surface_limit: its refined
-    #: zone does not enclose the bead, so the shape outputs are not judged
+    #: Levels whose bead section has more of its width topped by cells
+    #: coarser than its finest than the scene's coarse_surface_limit: its
+    #: refined cells do not enclose the bead, so the shape outputs are not
+    #: judged
     not_enclosed: tuple[str, ...] = ()
     #: Simulated time of the serial cost windows [s] and the processor they
     #: ran on (None: the cost is the members' runs')
@@ -678,7 +679,7 @@ NOT_JUDGED_REASONS = {
     "diagnostic": "a diagnostic of the section, not a result of the weld",
     "lack_of_fusion": "no level fuses by more than the fusion metrics resolve",
     "not_frozen": "a level's section cuts the bead before it froze",
-    "not_enclosed": "a level's refined zone does not enclose its bead's surface in the section",
+    "not_enclosed": "a level's refined cells do not enclose its bead in the section",
     "zero": "0 at every level and in the reference: nothing to converge",
 }
 
@@ -795,9 +796,9 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
         not_frozen = tuple(m.name for m in members
                            if not m.outputs.get("section_liquid", math.nan)
                            <= scene.section_liquid_limit)
-    # Levels whose bead surface lies partly in coarser cells than their
-    # finest there, or whose share was not measured: their shape is not
-    # read at their resolution
+    # Levels whose bead is topped partly by coarser cells than their finest
+    # there, or whose share was not measured: their shape is not read at
+    # their resolution
     not_enclosed = ()
     if hasattr(scene, "coarse_surface_limit"):
         not_enclosed = tuple(m.name for m in members
@@ -932,9 +933,9 @@ def write_json(study: Study, path: Path) -> None:
         # the limit): the section's shape outputs are then not judged
         "not_frozen": list(study.not_frozen),
         "section_liquid_limit": getattr(study.scene, "section_liquid_limit", None),
-        # Levels whose refined zone did not enclose the section's bead surface
-        # (its share in coarser cells above the limit): the shape outputs
-        # are then not judged
+        # Levels whose refined cells did not enclose the section's bead (the
+        # share of its width topped by coarser cells above the limit): the
+        # shape outputs are then not judged
         "not_enclosed": list(study.not_enclosed),
         "coarse_surface_limit": getattr(study.scene, "coarse_surface_limit", None),
         # The steadiness judge's shortest window of a bead study [s]
@@ -1075,9 +1076,9 @@ def markdown(study: Study) -> str:
         limit = study.scene.coarse_surface_limit
         shares = "; ".join(f"{m.name} {_percent(m.outputs.get('coarse_surface', math.nan))}"
                            for m in study.members)
-        lines += ["", f"Share of the bead section's surface in coarser cells than its finest "
-                  f"(out of the refined zone; mean of the fields of the last window): "
-                  f"{shares}."]
+        lines += ["", f"Share of the bead section's width topped by cells coarser than its "
+                  f"finest (out of the refined cells; mean of the fields of the last "
+                  f"window): {shares}."]
         if study.not_enclosed:
             lines += [f"Above {100 * limit:g} % (the finest error bound) the level's shape is "
                       f"not read at its own resolution, and a share not measured does not "

@@ -226,32 +226,33 @@ def latest_run_table(case: Path, name: str, file: str) -> np.ndarray:
 TIME_INFO = ("timeInfo", "timeInfo")
 
 
-def cpu_seconds(case: Path) -> float:
-    """CPU time of the master rank [s] of all runs of the case (timeInfo)."""
+def _time_info_runs(case: Path) -> list[tuple[Path, np.ndarray]]:
+    """Each run's timeInfo table with its file, oldest first; a run stopped
+    before its first step left an empty table, and took no time."""
     files = table_files(case, *TIME_INFO)
     if not files:
         raise FileNotFoundError(f"no postProcessing/timeInfo in {case}")
-    return float(sum(_parse_table(path)["cpuTime"][-1] for path in files))
+    tables = ((path, _parse_table(path)) for path in files)
+    return [(path, table) for path, table in tables if table is not None and len(table)]
+
+
+def cpu_seconds(case: Path) -> float:
+    """CPU time of the master rank [s] of all runs of the case (timeInfo)."""
+    return float(sum(table["cpuTime"][-1] for _, table in _time_info_runs(case)))
 
 
 def clock_seconds(case: Path) -> float:
     """Wall-clock time [s] of all runs of the case (timeInfo's clockTime,
     whole seconds)."""
-    files = table_files(case, *TIME_INFO)
-    if not files:
-        raise FileNotFoundError(f"no postProcessing/timeInfo in {case}")
-    return float(sum(_parse_table(path)["clockTime"][-1] for path in files))
+    return float(sum(table["clockTime"][-1] for _, table in _time_info_runs(case)))
 
 
 def simulated_seconds(case: Path) -> float:
     """Process time the case's runs simulated [s]: from each run's start
     (its timeInfo folder) to its last step; the tables a continued weld
     brought from its saved state were not simulated here."""
-    files = table_files(case, *TIME_INFO)
-    if not files:
-        raise FileNotFoundError(f"no postProcessing/timeInfo in {case}")
-    return float(sum(_parse_table(path)["Time"][-1] - float(path.parent.name)
-                     for path in files))
+    return float(sum(table["Time"][-1] - float(path.parent.name)
+                     for path, table in _time_info_runs(case)))
 
 
 def find_tables(case: Path, file: str) -> list[str]:

@@ -423,6 +423,37 @@ def test_field_metrics_are_window_means_of_the_written_fields() -> None:
     assert math.isnan(section_fields.window_means(rows, "body_width", np.array([30.0]), 1.0)[0])
 
 
+def test_a_bead_output_is_its_mean_over_the_judged_windows(tmp_path: Path) -> None:
+    """A level's output is its mean over the four judged windows, not the
+    last window's: a width rippling by 20 % with a period of the four
+    windows (0.5 s each, the bead area steady, so the window is the
+    shortest) averages to its mean c over them, while its last window
+    alone reads c (1 - 0.2 * 2 / pi), 13 % low.  Its ripple is the
+    standard deviation of the four quarter-period means, 0.2 c (2 / pi)
+    (1, 1, -1, -1): 0.2 c (2 / pi) sqrt(4 / 3)."""
+    from ldna import post
+    from ldna.case import Case
+
+    window, width, amplitude = 0.5, 10e-3, 0.2
+    metrics = tmp_path / "postProcessing" / "meltPoolMetrics" / "0"
+    metrics.mkdir(parents=True)
+    columns = post.BeadMetrics.FUNCTION_OBJECT_COLUMNS
+    rows = []
+    for t in np.linspace(0.0, 4.0, 4001):
+        values = dict.fromkeys(columns, 1e-3)
+        values.update(bead_area=35e-6, bead_width=width * (
+            1 + amplitude * math.sin(2 * math.pi * t / (4 * window))))
+        rows.append(f"{t:.6f}" + "".join(f"\t{values[c]:.9e}" for c in columns) + "\n")
+    metrics.joinpath("meltPoolMetrics.dat").write_text(
+        "# Time\t" + "\t".join(columns) + "\n" + "".join(rows))
+    scene = accuracy.BeadScene()
+    scene.min_window = window
+    outputs = scene.outputs(Case(tmp_path))
+    assert outputs["bead_width"] == pytest.approx(width, rel=1e-6)
+    assert outputs.ripples["bead_width"] == pytest.approx(
+        amplitude * width * 2 / math.pi * math.sqrt(4 / 3), rel=1e-3)
+
+
 def test_a_bead_study_gives_each_window_mean_its_ripple(tmp_path: Path) -> None:
     """Each level's outputs carry the standard deviation of their window
     means: in the table as value ± ripple, in accuracy.json per level in the

@@ -45,3 +45,21 @@ def test_a_run_shorter_than_its_start_up_is_refused(tmp_path: Path) -> None:
         "# Time\tcpuTime\tclockTime\n0.0001\t5.0\t5\n0.0002\t6.5\t7\n")
     with pytest.raises(RuntimeError, match="run a few more"):
         Case(tmp_path).seconds_per_step()
+
+
+def test_a_run_stopped_before_its_first_step_costs_nothing(tmp_path: Path) -> None:
+    """A study's leg killed while it started (its ranks stopped to change
+    the study's options) leaves an empty timeInfo table where the leg that
+    replaced it writes ``timeInfo_<time>.dat``: the case's CPU, clock and
+    simulated times are those of the runs that stepped."""
+    _write_time_info(tmp_path, 12.0)
+    stopped = tmp_path / "postProcessing" / "timeInfo" / "12.004"
+    stopped.mkdir()
+    (stopped / "timeInfo.dat").write_text("")
+    # timeInfo_12.004.dat: the replacing leg, one step of STEP_COST
+    (stopped / "timeInfo_12.004.dat").write_text(
+        f"# Time\tcpuTime\tclockTime\n{12.004 + DELTA_T:.6f}\t{STEP_COST}\t1\n")
+    case = Case(tmp_path)
+    cpu = sum(START_UP_COSTS) + STEP_COST * (STEPS - len(START_UP_COSTS))
+    assert case.cpu_seconds() == pytest.approx(cpu + STEP_COST, rel=1e-9)
+    assert case.simulated_seconds() == pytest.approx((STEPS + 1) * DELTA_T, rel=1e-6)

@@ -33,6 +33,7 @@ from .. import meshing
 from ..case import BALANCES, PROJECT_DIR, RUN_FUNCTIONS, Case
 from ..foamdict import read_scalars
 from ..steady import MIN_WINDOW as STEADY_MIN_WINDOW
+from ..steady import WINDOWS as STEADY_WINDOWS
 from ..steady import SCALES as STEADY_SCALES
 from ..stefan import NeumannSolution, front_position
 from ..study import Parameter
@@ -202,9 +203,9 @@ class BeadScene(LdnaScene):
     """The LDNA template's quasi-steady bead: each level runs until ``ldna
     steady`` judges its bead quasi-steady (domain balance included), in
     stretches of ``STRETCH`` after the first ``WINDOWS`` shortest windows,
-    at most to ``end_time``; its outputs are the window means of the last
-    judged windows (the wetting angle, the body width and the gas film
-    under the bead at the last time: ``ldna post`` reads them from the
+    at most to ``end_time``; its outputs are the means over the judged
+    windows (the wetting angle, the body width and the gas film under the
+    bead over the fields written in them: ``ldna post`` reads them from the
     fields).
 
     Start every level from a steady run of the scene (``--start-from``): a
@@ -313,9 +314,13 @@ class BeadScene(LdnaScene):
                                                   balance=steady.DomainBalance.of(case.path))
 
     def outputs(self, case: Case) -> "WindowMeans":
-        """Every output's mean over the last judged window, and its ripple:
-        the standard deviation of its means over the ``steady.WINDOWS``
-        judged windows.  The section's metrics come from meltPoolMetrics'
+        """Every output's mean over the ``steady.WINDOWS`` judged windows,
+        and its ripple: the standard deviation of its windows' means (the
+        mean's standard error is that over sqrt(WINDOWS)).  The last
+        window's mean alone scatters by the ripple: read over windows of
+        0.5 and 1 s, levels 0 and 0.5 of the superseded study differed by
+        up to 8 % in their last windows and by at most 3.6 % over the
+        four, within their standard errors (docs/accuracy-cost.md).  The section's metrics come from meltPoolMetrics'
         table, those only the fields hold (wetting angle, body width, gas
         film) from the fields written in the windows (``section_fields``)."""
         from .. import section_fields, steady
@@ -336,17 +341,21 @@ class BeadScene(LdnaScene):
         field_ends = ends + (offset if 0 <= offset < verdict.window else 0.0)
         for name in section_fields.COLUMNS:
             means[name] = section_fields.window_means(rows, name, field_ends, verdict.window)
+        # A run shorter than the windows (not judged) has means in its
+        # last ones only: those are averaged, and a ripple needs two
+        measured = {name: m[np.isfinite(m)] for name, m in means.items()}
         return WindowMeans(
-            {name: float(m[-1]) for name, m in means.items()},
-            ripples={name: float(np.std(m, ddof=1)) for name, m in means.items()},
-            fields_in_window=section_fields.times_in_window(rows, field_ends[-1],
-                                                            verdict.window))
+            {name: float(m.mean()) if m.size else math.nan for name, m in measured.items()},
+            ripples={name: float(np.std(m, ddof=1)) if m.size > 1 else math.nan
+                     for name, m in measured.items()},
+            fields_in_window=section_fields.times_in_window(
+                rows, field_ends[-1], steady.WINDOWS * verdict.window))
 
 
 class WindowMeans(dict):
     """Outputs (name -> SI value) that are window means, with each one's
     ripple (the standard deviation of its window means, SI) and how many
-    written fields the last window held."""
+    written fields the judged windows held."""
 
     def __init__(self, values: dict[str, float], ripples: dict[str, float],
                  fields_in_window: int) -> None:
@@ -420,7 +429,7 @@ class Member:
     errors: dict[str, float] = field(default_factory=dict)
     #: Outputs that are window means (bead scene): the standard deviation of
     #: each one's judged windows' means (SI), and the written fields of the
-    #: last window (what the field-read outputs average)
+    #: judged windows (what the field-read outputs average)
     ripples: dict[str, float] = field(default_factory=dict)
     fields_in_window: int | None = None
     #: Bead scene: judged quasi-steady at the end, why (not), and the first
@@ -909,7 +918,7 @@ def write_json(study: Study, path: Path) -> None:
             "errors": {n: finite(m.errors.get(n, math.nan)) for n in meta},
             # Window means (bead scene): the standard deviation of each
             # output's judged windows' means, in its unit, and the fields
-            # the last window held
+            # the judged windows held
             "ripples": {unit_name(n): finite(m.ripples[n] * meta[n][2])
                         for n in meta if n in m.ripples},
             "fields_in_window": m.fields_in_window,
@@ -1001,11 +1010,12 @@ def markdown(study: Study) -> str:
               f"Observed order of convergence (slope of log error over log cell size): "
               f"{orders or 'not enough non-zero errors to fit'}."]
     if any(m.ripples for m in study.members):
-        lines += ["", "Each value is its mean over the last judged window; ± its ripple, the "
-                  "standard deviation of its means over the judged windows (an error below "
-                  "the ripples of the two levels compared is not resolved).  The wetting "
-                  "angle, body width and gas film are means of the fields written in the "
-                  "windows (last window: " + ", ".join(
+        lines += ["", f"Each value is its mean over the {STEADY_WINDOWS} judged windows; ± its "
+                  "ripple, the standard deviation of its windows' means (the mean's standard "
+                  f"error is that over sqrt({STEADY_WINDOWS}); an error below the ripples of the two levels compared, "
+                  "about two standard errors of their difference, is not resolved).  The "
+                  "wetting angle, body width and gas film are means of the fields written in "
+                  "the windows (" + ", ".join(
                       f"{m.name} {m.fields_in_window}" for m in study.members
                       if m.fields_in_window is not None) + " fields)."]
     if any(m.steady is not None for m in study.members):
@@ -1064,7 +1074,7 @@ def markdown(study: Study) -> str:
         shares = "; ".join(f"{m.name} {_percent(m.outputs.get('section_liquid', math.nan))}"
                            for m in study.members)
         lines += ["", f"Liquid share of the bead section (its metal still liquid, mean of "
-                  f"the fields of the last window): {shares}."]
+                  f"the fields of the judged windows): {shares}."]
         if study.not_frozen:
             lines += [f"Above {100 * limit:g} % (the finest error bound) the section cuts the "
                       f"bead before it froze, so its shape is not the bead's final one, and a "
@@ -1077,8 +1087,8 @@ def markdown(study: Study) -> str:
         shares = "; ".join(f"{m.name} {_percent(m.outputs.get('coarse_surface', math.nan))}"
                            for m in study.members)
         lines += ["", f"Share of the bead section's width topped by cells coarser than its "
-                  f"finest (out of the refined cells; mean of the fields of the last "
-                  f"window): {shares}."]
+                  f"finest (out of the refined cells; mean of the fields of the judged "
+                  f"windows): {shares}."]
         if study.not_enclosed:
             lines += [f"Above {100 * limit:g} % (the finest error bound) the level's shape is "
                       f"not read at its own resolution, and a share not measured does not "

@@ -866,17 +866,31 @@ def evaluate(scene: Scene, members: list[Member], exact: dict[str, float] | None
 
 
 
+def error_spread(study: Study, member: Member, name: str) -> float:
+    """How far ``member``'s error on ``name`` is known, as a share of the
+    output's scale: the ripples of the level and of the reference combined
+    (window means: about two standard errors of the difference of their
+    four windows' means; 0 without ripples)."""
+    finest = study.reference_member
+    size = error_scale(getattr(study.scene, "error_scales", {}), study.reference, name)
+    spread = math.hypot(member.ripples.get(name, 0.0),
+                        0.0 if finest is None else finest.ripples.get(name, 0.0))
+    return spread / size if size > 0 else math.nan
+
+
 def cheapest_levels(study: Study) -> dict[str, dict[str, float | None]]:
     """Per output and error bound, the cheapest level (core-hours per simulated
-    second) whose error against the reference is within the bound; None when
-    only the reference itself is (a finer level than tested may be needed)."""
+    second) whose error against the reference is within the bound with its
+    spread (``error_spread``): a bead whose window means scatter is within
+    5 % only if its error and the scatter together are; None when only the
+    reference itself is (a finer level than tested may be needed)."""
     chosen: dict[str, dict[str, float | None]] = {}
     for name in study.scene.outputs_meta:
         chosen[name] = {}
         for bound in ERROR_BOUNDS:
             within = [m for m in study.members
-                      if math.isfinite(m.errors.get(name, math.nan))
-                      and m.errors[name] <= bound and m.outputs is not study.reference]
+                      if m.outputs is not study.reference
+                      and m.errors.get(name, math.nan) + error_spread(study, m, name) <= bound]
             best = min(within, key=lambda m: m.core_seconds_per_ms, default=None)
             chosen[name][f"{round(100 * bound)}%"] = None if best is None else best.level
     return chosen
@@ -1050,7 +1064,9 @@ def markdown(study: Study) -> str:
         size = error_scale(scales, study.reference, name)
         return f" (its ripple {100 * finest.ripples[name] / size:.2g} %)" if size > 0 else ""
 
-    lines += ["", "Cheapest level within 5 % / 10 % of the reference: " + "; ".join(
+    spread_note = (" (its error and the two levels' ripples together within the bound)"
+                   if any(m.ripples for m in study.members) else "")
+    lines += ["", f"Cheapest level within 5 % / 10 % of the reference{spread_note}: " + "; ".join(
         f"{meta[n][0]} {_level_or_finer(c['5%'])} / {_level_or_finer(c['10%'])}"
         + reference_ripple(n)
         for n, c in cheapest.items() if n not in study.not_judged) + "."]
@@ -1136,7 +1152,6 @@ def plot(study: Study, path: Path) -> None:
     figure, axes = plt.subplots(figsize=(7.5, 7))
     # More outputs than the default cycle's ten colours
     colours = plt.get_cmap("tab20")
-    finest = study.reference_member
     plotted: set[int] = set()
     for index, name in enumerate(meta):
         points = sorted((m.core_hours_per_simulated_s, m.errors.get(name, math.nan), id(m), m)
@@ -1148,10 +1163,7 @@ def plot(study: Study, path: Path) -> None:
         order = study.orders.get(name, math.nan)
         three = (study.three_level or {}).get(name)
         # The ripples of the level and the reference, as the error is read
-        size = error_scale(getattr(study.scene, "error_scales", {}), study.reference, name)
-        spread = [math.hypot(m.ripples.get(name, 0.0),
-                             0.0 if finest is None else finest.ripples.get(name, 0.0))
-                  / size for m in members]
+        spread = [error_spread(study, m, name) for m in members]
         label = (meta[name][0] + (f" (order {order:.2f})" if math.isfinite(order) else "")
                  + ("" if three is None else
                     f", 3 finest: GCI {100 * three.gci:.2g} %" if three.status == "converging"

@@ -122,11 +122,12 @@ def test_bead_study_of_two_coarse_levels(tmp_path: Path, monkeypatch: pytest.Mon
 
 def test_band_level_from_the_saved_weld(tmp_path: Path) -> None:
     """``--band``: level L is level L - 1 with the saved weld's deposit,
-    pool and droplet column, grown by a cell, split once.  Levels 0 and 1
+    pool and droplet column, grown by a cell and above the substrate by
+    another, split once.  Levels 0 and 1
     from the saved weld for 2 ms (a droplet per wire in flight): level 1's
     band has the droplet-resolving cells (0.225 mm) on fewer cells than
     level 1 refined throughout (about six times the template's level 0,
-    which the saved weld was computed on; the band: 119 027 cells, 3.3
+    which the saved weld was computed on; the band: 131 207 cells, 3.6
     times, on 2026-12-06, 90 152 before it held the deposit); level 0 by
     the band has the template's 0.45 mm where the weld is, on fewer cells
     than the template's level 0.  Both start with the saved

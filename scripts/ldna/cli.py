@@ -461,8 +461,9 @@ def build_parser() -> argparse.ArgumentParser:
                           help="LDNA: every level refines only the band where the "
                                "--start-from weld has its deposit (metal above the "
                                "substrate), its pool and its droplets, grown by a cell and "
-                               "above the substrate by another (level L: level L-1 with that band split once, bandLevel in "
-                               "caseParameters; levels from 0)")
+                               "above the substrate by another (level L: level L-1 with "
+                               "that band split once, bandLevel in caseParameters; levels "
+                               "from 0)")
     accuracy.add_argument("--min-window", type=_positive_float, default=None, metavar="S",
                           help="bead scene: judge steadiness over windows of at least S "
                                "seconds (as ldna steady --min-window), for a weld that fills "

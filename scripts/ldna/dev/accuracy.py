@@ -320,9 +320,10 @@ class BeadScene(LdnaScene):
         window's mean alone scatters by the ripple: read over windows of
         0.5 and 1 s, levels 0 and 0.5 of the superseded study differed by
         up to 8 % in their last windows and by at most 3.6 % over the
-        four, within their standard errors (docs/accuracy-cost.md).  The section's metrics come from meltPoolMetrics'
-        table, those only the fields hold (wetting angle, body width, gas
-        film) from the fields written in the windows (``section_fields``)."""
+        four, within their standard errors (docs/accuracy-cost.md).  The
+        section's metrics come from meltPoolMetrics' table, those only the
+        fields hold (wetting angle, body width, gas film) from the fields
+        written in the windows (``section_fields``)."""
         from .. import section_fields, steady
 
         verdict = steady.case_steadiness(case.path, min_window=self.min_window)
@@ -1026,8 +1027,9 @@ def markdown(study: Study) -> str:
     if any(m.ripples for m in study.members):
         lines += ["", f"Each value is its mean over the {STEADY_WINDOWS} judged windows; ± its "
                   "ripple, the standard deviation of its windows' means (the mean's standard "
-                  f"error is that over sqrt({STEADY_WINDOWS}); an error below the ripples of the two levels compared, "
-                  "about two standard errors of their difference, is not resolved).  The "
+                  f"error is that over sqrt({STEADY_WINDOWS}); an error below the ripples "
+                  "of the two levels compared, about two standard errors of their "
+                  "difference, is not resolved).  The "
                   "wetting angle, body width and gas film are means of the fields written in "
                   "the windows (" + ", ".join(
                       f"{m.name} {m.fields_in_window}" for m in study.members
